@@ -1,0 +1,9 @@
+// exidel: every predicate kernel.
+#pragma once
+
+#include "exidel/predicates/adaptive.hpp"
+#include "exidel/predicates/exact.hpp"
+#include "exidel/predicates/floating.hpp"
+#include "exidel/predicates/kernel.hpp"
+#include "exidel/predicates/mpfr.hpp"
+#include "exidel/predicates/types.hpp"

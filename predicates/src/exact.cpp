@@ -1,0 +1,95 @@
+// exidel: the exact reference kernel (exponent-aligned integers, GMP or cpp_int).
+#include "exidel/predicates/exact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <initializer_list>
+
+#include <boost/multiprecision/cpp_int.hpp>
+#include <boost/multiprecision/gmp.hpp>
+
+#include "formulas.hpp"
+#include "fp_hygiene.hpp"
+
+namespace exidel {
+
+namespace {
+
+template <ExactBackend B>
+struct IntegerOf;
+template <>
+struct IntegerOf<ExactBackend::gmp> {
+    using type = boost::multiprecision::mpz_int;
+};
+template <>
+struct IntegerOf<ExactBackend::cpp_int> {
+    using type = boost::multiprecision::cpp_int;
+};
+
+// A finite double v != 0 is m * 2^q with m a 53-bit signed integer and q = exponent - 53.
+struct Decomposed {
+    std::int64_t mantissa;
+    int shift;
+};
+
+Decomposed decompose(double v) {
+    int e = 0;
+    const double m = std::frexp(v, &e);  // v = m * 2^e, 0.5 <= |m| < 1: exact
+    return {static_cast<std::int64_t>(std::ldexp(m, 53)), e - 53};
+}
+
+// Maps the coordinates of one query to integers on the common grid 2^g, where g is the
+// smallest q among them. All predicates are homogeneous in coordinate differences, so the
+// scale 2^-g changes no sign (proofs/exact-kernel.md).
+template <class Int>
+class AlignedLift {
+public:
+    AlignedLift(std::initializer_list<Point2> points) {
+        for (const Point2& p : points) {
+            for (double v : {p.x, p.y}) {
+                if (v != 0) grid_ = std::min(grid_, decompose(v).shift);
+            }
+        }
+    }
+    Int operator()(double v) const {
+        if (v == 0) return Int(0);
+        const Decomposed d = decompose(v);
+        Int r(d.mantissa);
+        r <<= static_cast<unsigned>(d.shift - grid_);
+        return r;
+    }
+
+private:
+    int grid_ = 1 << 20;  // larger than any exponent: every nonzero value lowers it
+};
+
+}  // namespace
+
+template <ExactBackend B>
+std::string ExactKernel<B>::name() {
+    return B == ExactBackend::gmp ? "exact" : "exact-cpp";
+}
+
+template <ExactBackend B>
+Sign ExactKernel<B>::orient2d(Point2 a, Point2 b, Point2 c) {
+    using Int = typename IntegerOf<B>::type;
+    return detail::orient2d_formula<Int>(a, b, c, AlignedLift<Int>{a, b, c});
+}
+
+template <ExactBackend B>
+Sign ExactKernel<B>::incircle(Point2 a, Point2 b, Point2 c, Point2 d) {
+    using Int = typename IntegerOf<B>::type;
+    return detail::incircle_formula<Int>(a, b, c, d, AlignedLift<Int>{a, b, c, d});
+}
+
+template <ExactBackend B>
+Sign ExactKernel<B>::incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d) {
+    using Int = typename IntegerOf<B>::type;
+    return detail::incircle_cosine_formula<Int>(a, b, c, d, AlignedLift<Int>{a, b, c, d});
+}
+
+template struct ExactKernel<ExactBackend::gmp>;
+template struct ExactKernel<ExactBackend::cpp_int>;
+
+}  // namespace exidel

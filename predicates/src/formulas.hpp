@@ -1,0 +1,70 @@
+// exidel (private): the textbook formulas, written once over any number type N.
+//
+// FloatingKernel<double>, FloatingKernel<long double>, MpfrKernel and ExactKernel all
+// evaluate exactly these expressions in exactly this order; only the arithmetic differs.
+// `lift` turns a double coordinate into an N. N needs +, -, *, and comparison with 0.
+#pragma once
+
+#include "exidel/predicates/types.hpp"
+
+namespace exidel::detail {
+
+/// (b - a) x (c - a).
+template <class N, class Lift>
+Sign orient2d_formula(Point2 a, Point2 b, Point2 c, Lift lift) {
+    const N ax = lift(a.x), ay = lift(a.y);
+    const N abx = lift(b.x) - ax, aby = lift(b.y) - ay;
+    const N acx = lift(c.x) - ax, acy = lift(c.y) - ay;
+    const N det = abx * acy - aby * acx;
+    return sign_of(det);
+}
+
+/// Shewchuk's incircle determinant with d as the pivot:
+///   | ax-dx  ay-dy  (ax-dx)^2 + (ay-dy)^2 |
+///   | bx-dx  by-dy  (bx-dx)^2 + (by-dy)^2 |
+///   | cx-dx  cy-dy  (cx-dx)^2 + (cy-dy)^2 |
+/// positive iff d is strictly inside the circle through a, b, c when abc is CCW.
+template <class N, class Lift>
+Sign incircle_formula(Point2 a, Point2 b, Point2 c, Point2 d, Lift lift) {
+    const N dx = lift(d.x), dy = lift(d.y);
+    const N adx = lift(a.x) - dx, ady = lift(a.y) - dy;
+    const N bdx = lift(b.x) - dx, bdy = lift(b.y) - dy;
+    const N cdx = lift(c.x) - dx, cdy = lift(c.y) - dy;
+    const N alift = adx * adx + ady * ady;
+    const N blift = bdx * bdx + bdy * bdy;
+    const N clift = cdx * cdx + cdy * cdy;
+    const N det = alift * (bdx * cdy - cdx * bdy) + blift * (cdx * ady - adx * cdy) +
+                  clift * (adx * bdy - bdx * ady);
+    return sign_of(det);
+}
+
+/// Decides the sign of E = |a-c||b-c| u + |a-d||b-d| v without square roots, given the
+/// two dot products u = (a-d).(b-d), v = (a-c).(b-c) and the squared lengths. The
+/// paper's "check the signs, then square": if u and v have the same sign, E has it;
+/// otherwise the term with the larger square wins (proofs/cosine.md, case analysis).
+/// Returns sign(-E): positive iff cos(angle at d) + cos(angle at c) < 0.
+template <class N>
+Sign cosine_decision(const N& u, const N& v, const N& ac2, const N& bc2, const N& ad2,
+                     const N& bd2) {
+    const Sign su = sign_of(u), sv = sign_of(v);
+    if (su == sv) return -su;
+    // Squares of the two terms of E: |a-c|^2 |b-c|^2 u^2 against |a-d|^2 |b-d|^2 v^2.
+    const N left = ac2 * bc2 * (u * u);
+    const N right = ad2 * bd2 * (v * v);
+    const Sign e = left > right ? su : (right > left ? sv : Sign::zero);
+    return -e;
+}
+
+template <class N, class Lift>
+Sign incircle_cosine_formula(Point2 a, Point2 b, Point2 c, Point2 d, Lift lift) {
+    const N ax = lift(a.x), ay = lift(a.y), bx = lift(b.x), by = lift(b.y);
+    const N cx = lift(c.x), cy = lift(c.y), dx = lift(d.x), dy = lift(d.y);
+    const N adx = ax - dx, ady = ay - dy, bdx = bx - dx, bdy = by - dy;
+    const N acx = ax - cx, acy = ay - cy, bcx = bx - cx, bcy = by - cy;
+    const N u = adx * bdx + ady * bdy;  // (a-d).(b-d): |a-d||b-d| cos(angle at d)
+    const N v = acx * bcx + acy * bcy;  // (a-c).(b-c): |a-c||b-c| cos(angle at c)
+    return cosine_decision<N>(u, v, acx * acx + acy * acy, bcx * bcx + bcy * bcy,
+                              adx * adx + ady * ady, bdx * bdx + bdy * bdy);
+}
+
+}  // namespace exidel::detail
