@@ -2,7 +2,7 @@
 #include "exidel/predicates/exact.hpp"
 
 #include <algorithm>
-#include <cmath>
+#include <bit>
 #include <cstdint>
 #include <initializer_list>
 
@@ -27,16 +27,24 @@ struct IntegerOf<ExactBackend::cpp_int> {
     using type = boost::multiprecision::cpp_int;
 };
 
-// A finite double v != 0 is m * 2^q with m a 53-bit signed integer and q = exponent - 53.
+// A finite double is m * 2^q with m a signed integer of at most 53 bits. Read from the
+// bits rather than computed with frexp, so the answer cannot depend on the caller's
+// floating-point environment (denormals-are-zero would read a subnormal as 0).
 struct Decomposed {
     std::int64_t mantissa;
     int shift;
 };
 
 Decomposed decompose(double v) {
-    int e = 0;
-    const double m = std::frexp(v, &e);  // v = m * 2^e, 0.5 <= |m| < 1: exact
-    return {static_cast<std::int64_t>(std::ldexp(m, 53)), e - 53};
+    const auto bits = std::bit_cast<std::uint64_t>(v);
+    const int biased_exponent = static_cast<int>((bits >> 52) & 0x7ff);
+    auto mantissa = static_cast<std::int64_t>(bits & ((std::uint64_t{1} << 52) - 1));
+    int shift = -1074;  // subnormal: no hidden bit
+    if (biased_exponent != 0) {
+        mantissa |= std::int64_t{1} << 52;
+        shift = biased_exponent - 1075;
+    }
+    return {(bits >> 63) != 0 ? -mantissa : mantissa, shift};
 }
 
 // Maps the coordinates of one query to integers on the common grid 2^g, where g is the
@@ -48,13 +56,14 @@ public:
     AlignedLift(std::initializer_list<Point2> points) {
         for (const Point2& p : points) {
             for (double v : {p.x, p.y}) {
-                if (v != 0) grid_ = std::min(grid_, decompose(v).shift);
+                const Decomposed d = decompose(v);
+                if (d.mantissa != 0) grid_ = std::min(grid_, d.shift);
             }
         }
     }
     Int operator()(double v) const {
-        if (v == 0) return Int(0);
         const Decomposed d = decompose(v);
+        if (d.mantissa == 0) return Int(0);
         Int r(d.mantissa);
         r <<= static_cast<unsigned>(d.shift - grid_);
         return r;

@@ -24,18 +24,22 @@ Sign orient2d_formula(Point2 a, Point2 b, Point2 c, Lift lift) {
 ///   | bx-dx  by-dy  (bx-dx)^2 + (by-dy)^2 |
 ///   | cx-dx  cy-dy  (cx-dx)^2 + (cy-dy)^2 |
 /// positive iff d is strictly inside the circle through a, b, c when abc is CCW.
-template <class N, class Lift>
-Sign incircle_formula(Point2 a, Point2 b, Point2 c, Point2 d, Lift lift) {
-    const N dx = lift(d.x), dy = lift(d.y);
-    const N adx = lift(a.x) - dx, ady = lift(a.y) - dy;
-    const N bdx = lift(b.x) - dx, bdy = lift(b.y) - dy;
-    const N cdx = lift(c.x) - dx, cdy = lift(c.y) - dy;
+template <class N>
+N incircle_of_differences(const N& adx, const N& ady, const N& bdx, const N& bdy, const N& cdx,
+                          const N& cdy) {
     const N alift = adx * adx + ady * ady;
     const N blift = bdx * bdx + bdy * bdy;
     const N clift = cdx * cdx + cdy * cdy;
     const N det = alift * (bdx * cdy - cdx * bdy) + blift * (cdx * ady - adx * cdy) +
                   clift * (adx * bdy - bdx * ady);
-    return sign_of(det);
+    return det;
+}
+
+template <class N, class Lift>
+Sign incircle_formula(Point2 a, Point2 b, Point2 c, Point2 d, Lift lift) {
+    const N dx = lift(d.x), dy = lift(d.y);
+    return sign_of(incircle_of_differences<N>(lift(a.x) - dx, lift(a.y) - dy, lift(b.x) - dx,
+                                              lift(b.y) - dy, lift(c.x) - dx, lift(c.y) - dy));
 }
 
 /// Decides the sign of E = |a-c||b-c| u + |a-d||b-d| v without square roots, given the

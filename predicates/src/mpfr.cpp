@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "formulas.hpp"
+#include "fp_environment.hpp"
 #include "fp_hygiene.hpp"
 
 namespace exidel {
@@ -77,16 +78,31 @@ MpfrKernel::MpfrKernel(unsigned bits) : bits_(bits) {
 
 std::string MpfrKernel::name() const { return "mpfr:" + std::to_string(bits_); }
 
+// MPFR converts doubles with the processor's arithmetic, which denormals-are-zero would
+// distort: run in the standard environment like the adaptive kernel.
+namespace {
+Sign orient2d_mpfr(Point2 a, Point2 b, Point2 c, mpfr_prec_t bits) {
+    return detail::orient2d_formula<MpfrValue>(a, b, c, MpfrLift{bits});
+}
+Sign incircle_mpfr(Point2 a, Point2 b, Point2 c, Point2 d, mpfr_prec_t bits) {
+    return detail::incircle_formula<MpfrValue>(a, b, c, d, MpfrLift{bits});
+}
+Sign incircle_cosine_mpfr(Point2 a, Point2 b, Point2 c, Point2 d, mpfr_prec_t bits) {
+    return detail::incircle_cosine_formula<MpfrValue>(a, b, c, d, MpfrLift{bits});
+}
+}  // namespace
+
 Sign MpfrKernel::orient2d(Point2 a, Point2 b, Point2 c) const {
-    return detail::orient2d_formula<MpfrValue>(a, b, c, MpfrLift{bits_});
+    return detail::in_standard_environment<orient2d_mpfr>(a, b, c, mpfr_prec_t{bits_});
 }
 
 Sign MpfrKernel::incircle(Point2 a, Point2 b, Point2 c, Point2 d) const {
-    return detail::incircle_formula<MpfrValue>(a, b, c, d, MpfrLift{bits_});
+    return detail::in_standard_environment<incircle_mpfr>(a, b, c, d, mpfr_prec_t{bits_});
 }
 
 Sign MpfrKernel::incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d) const {
-    return detail::incircle_cosine_formula<MpfrValue>(a, b, c, d, MpfrLift{bits_});
+    return detail::in_standard_environment<incircle_cosine_mpfr>(a, b, c, d,
+                                                                 mpfr_prec_t{bits_});
 }
 
 }  // namespace exidel

@@ -1,0 +1,57 @@
+// exidel: the error-bound constants of the adaptive kernel, each a formula in machine
+// epsilon with the name of the document in proofs/ that derives it. A test in proofs/
+// (label `proofs`) reads the proven values and checks that every constant here is at least
+// its proven bound, so the code and the proofs cannot drift apart silently.
+#pragma once
+
+namespace exidel::bounds {
+
+/// Unit roundoff of binary64 with round to nearest: half an ulp of 1.
+inline constexpr double epsilon = 0x1p-53;
+
+// ---- orient2d and the two-product sums of the same shape --------------------------------
+// The filter evaluates (ax-cx)(by-cy) -/+ (ay-cy)(bx-cx) with five roundings; Shewchuk
+// (1997), "Adaptive precision floating-point arithmetic and fast robust geometric
+// predicates", Section 4.2 and 4.3; proofs/bounds.md#orient2d.
+/// Stage A: |computed - exact| <= ccw_a * (|(ax-cx)(by-cy)| + |(ay-cy)(bx-cx)|), computed.
+inline constexpr double ccw_a = (3.0 + 16.0 * epsilon) * epsilon;
+/// Stage B: error of the rounded estimate of the exact determinant of the rounded
+/// differences, plus the effect of the differences' rounding.
+inline constexpr double ccw_b = (2.0 + 12.0 * epsilon) * epsilon;
+/// Stage C: second-order terms dropped by the first-order tail correction.
+inline constexpr double ccw_c = (9.0 + 64.0 * epsilon) * epsilon * epsilon;
+/// Stage C: the rounding of the corrected value itself.
+inline constexpr double result_err = (3.0 + 8.0 * epsilon) * epsilon;
+
+// ---- incircle ---------------------------------------------------------------------------
+// Shewchuk (1997), Section 4.4; proofs/bounds.md#incircle.
+inline constexpr double icc_a = (10.0 + 96.0 * epsilon) * epsilon;
+inline constexpr double icc_b = (4.0 + 48.0 * epsilon) * epsilon;
+inline constexpr double icc_c = (44.0 + 576.0 * epsilon) * epsilon * epsilon;
+
+// ---- gradual underflow ------------------------------------------------------------------
+// Shewchuk's bounds assume no underflow. A product that lands in the subnormal range has
+// an absolute error up to 2^-1075 beyond its relative error; sums and differences of
+// doubles are exact when their result is subnormal. The filters therefore add an absolute
+// term: orient2d has two products summed directly (2 * 2^-1075 plus the rounding of the
+// bound itself), incircle's underflow errors are scaled by the lifts and the cross-product
+// pairs they multiply (proofs/bounds.md#underflow).
+inline constexpr double underflow_orient = 0x1p-1070;
+inline constexpr double underflow_incircle = 0x1p-1068;
+
+// ---- incircle_cosine: the squared comparison --------------------------------------------
+// L = |a-c|^2 |b-c|^2 u^2 and R = |a-d|^2 |b-d|^2 v^2 are computed in floating point from
+// rounded differences: 11 roundings on each side, and u (v) carries the relative error
+// du = eu / (|u~| - eu) certified by its own filter. For du <= 1/4 the computed L~ is
+// within (cos_rel + cos_rel_dot * du) * L~ of L (proofs/bounds.md#cosine derives
+// 11 eps + 3 du; the constants leave room for the rounding of the bound itself). The
+// filter decides L > R only when L~ - R~ exceeds the sum of both sides' bounds.
+inline constexpr double cos_rel = 16.0 * epsilon;
+inline constexpr double cos_rel_dot = 4.0;
+/// Largest relative error of a dot product for which the squared filter is tried.
+inline constexpr double cos_max_dot_rel = 0.25;
+/// The squared comparison is tried only when every factor and partial product is at least
+/// this large (so none is subnormal) and finite.
+inline constexpr double cos_min_factor = 0x1p-1000;
+
+}  // namespace exidel::bounds

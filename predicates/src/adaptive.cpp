@@ -1,0 +1,323 @@
+// exidel: the adaptive kernel. Each predicate reads as: filter, then (rarely) the adaptive
+// stages, then (very rarely) exact expansions, or exact integers when the magnitudes are
+// outside the range where expansion arithmetic is error-free.
+#include "exidel/predicates/adaptive.hpp"
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <initializer_list>
+#include <limits>
+
+#include "exidel/predicates/constants.hpp"
+#include "exidel/predicates/exact.hpp"
+#include "expansion.hpp"
+#include "formulas.hpp"
+#include "fp_environment.hpp"
+#include "fp_hygiene.hpp"
+
+namespace exidel {
+
+namespace {
+
+using detail::Expansion;
+namespace eb = bounds;
+
+// ---- Deciding a filter ------------------------------------------------------------------
+// One predictable branch ("decided?") instead of one per sign: on random input the sign is
+// a coin flip, and a branch on it mispredicts half the time. Strict comparisons: when an
+// overflow makes the value and the bound infinite or NaN, neither test passes.
+inline bool filter_decides(double value, double errbound, Sign& sign) {
+    const bool positive = value > errbound, negative = -value > errbound;
+    sign = static_cast<Sign>(static_cast<int>(positive) - static_cast<int>(negative));
+    return positive | negative;
+}
+
+// ---- When is expansion arithmetic error-free? -------------------------------------------
+// Every nonzero double v is a multiple of 2^g(v), g(v) = max(ilogb(v) - 52, -1074). A
+// polynomial of degree d in the coordinates then only ever produces multiples of
+// 2^(d * min g), so Two-Sum and Two-Product never underflow when d * min g >= -1074; and
+// with every |v| < 2^(max_log + 1) no intermediate of the formulas overflows
+// (proofs/bounds.md#expansion-range derives max_log per predicate).
+bool expansion_safe(std::initializer_list<double> coordinates, int degree, int max_log) {
+    int g_min = INT_MAX, e_max = INT_MIN;
+    for (double v : coordinates) {
+        if (v == 0) continue;
+        const int e = std::ilogb(v);
+        e_max = std::max(e_max, e);
+        g_min = std::min(g_min, std::max(e - 52, -1074));
+    }
+    return e_max == INT_MIN || (e_max <= max_log && degree * g_min >= -1074);
+}
+
+constexpr int orient_max_log = 500;    // degree 2: 2 terms of (2^(E+2))^2 < 2^1023
+constexpr int incircle_max_log = 250;  // degree 4: 3 terms of 2^(2E+5) * 2^(2E+6) < 2^1023
+constexpr int cosine_max_log = 120;    // degree 8: 2 terms of (2^(2E+5))^4 < 2^1023
+
+Expansion lift_expansion(double v) { return Expansion(v); }
+
+/// Sign of an expansion given as raw components (zeros allowed).
+template <std::size_t N>
+Sign sign_of_components(const double (&x)[N]) {
+    return Expansion::from_components(x).sign();
+}
+
+// ---- Two products of differences: orient2d, and the dot products of the cosine test ----
+// value = (p0 - p1)(q0 - q1) - (r0 - r1)(s0 - s1)   (Plus = false: orient2d)
+// value = (p0 - p1)(q0 - q1) + (r0 - r1)(s0 - s1)   (Plus = true: a dot product)
+struct ProductPair {
+    double p0, p1, q0, q1, r0, r1, s0, s1;
+};
+
+template <bool Plus>
+Expansion product_pair_exact(const ProductPair& t) {
+    const Expansion first = (Expansion(t.p0) - Expansion(t.p1)) * (Expansion(t.q0) - Expansion(t.q1));
+    const Expansion second = (Expansion(t.r0) - Expansion(t.r1)) * (Expansion(t.s0) - Expansion(t.s1));
+    return Plus ? first + second : first - second;
+}
+
+/// Shewchuk's orient2dadapt stages B, C and D for either sign of the pair. `sum_abs` is
+/// the permanent the filter computed. The caller has checked expansion_safe.
+template <bool Plus>
+Sign product_pair_adapt(const ProductPair& t, double sum_abs, AdaptiveStage& stage) {
+    const double p = t.p0 - t.p1, q = t.q0 - t.q1, r = t.r0 - t.r1, s = t.s0 - t.s1;
+
+    // Stage B: the exact value of the rounded differences' expression, estimated.
+    double first, first_tail, second, second_tail, B[4];
+    detail::two_product(p, q, first, first_tail);
+    detail::two_product(r, s, second, second_tail);
+    if constexpr (Plus) {
+        detail::two_two_sum(first, first_tail, second, second_tail, B);
+    } else {
+        detail::two_two_diff(first, first_tail, second, second_tail, B);
+    }
+    double det = B[0] + B[1] + B[2] + B[3];
+    double errbound = eb::ccw_b * sum_abs;
+    stage = AdaptiveStage::stage_b;
+    if (det > errbound) return Sign::positive;
+    if (-det > errbound) return Sign::negative;
+
+    const double p_tail = detail::two_diff_tail(t.p0, t.p1, p);
+    const double q_tail = detail::two_diff_tail(t.q0, t.q1, q);
+    const double r_tail = detail::two_diff_tail(t.r0, t.r1, r);
+    const double s_tail = detail::two_diff_tail(t.s0, t.s1, s);
+    if (p_tail == 0 && q_tail == 0 && r_tail == 0 && s_tail == 0) {
+        return sign_of_components(B);  // the differences were exact, so B is the value
+    }
+
+    // Stage C: first-order correction by the tails of the differences.
+    stage = AdaptiveStage::stage_c;
+    errbound = eb::ccw_c * sum_abs + eb::result_err * std::fabs(det);
+    const double correction_first = p * q_tail + q * p_tail;
+    const double correction_second = r * s_tail + s * r_tail;
+    det += Plus ? correction_first + correction_second : correction_first - correction_second;
+    if (det > errbound) return Sign::positive;
+    if (-det > errbound) return Sign::negative;
+
+    stage = AdaptiveStage::exact;
+    return product_pair_exact<Plus>(t).sign();
+}
+
+// ---- orient2d ---------------------------------------------------------------------------
+
+[[gnu::noinline]] Sign orient2d_adapt(Point2 a, Point2 b, Point2 c, double detsum,
+                                      AdaptiveStage& stage) {
+    if (!expansion_safe({a.x, a.y, b.x, b.y, c.x, c.y}, 2, orient_max_log)) {
+        stage = AdaptiveStage::gmp;
+        return GmpExactKernel::orient2d(a, b, c);
+    }
+    return product_pair_adapt<false>({a.x, c.x, b.y, c.y, a.y, c.y, b.x, c.x}, detsum, stage);
+}
+
+// (a - c) x (b - c), which equals (b - a) x (c - a).
+inline Sign orient2d_impl(Point2 a, Point2 b, Point2 c, AdaptiveStage* stage) {
+    const double detleft = (a.x - c.x) * (b.y - c.y);
+    const double detright = (a.y - c.y) * (b.x - c.x);
+    const double det = detleft - detright;
+    const double detsum = std::fabs(detleft) + std::fabs(detright);
+    const double errbound = eb::ccw_a * detsum + eb::underflow_orient;
+    *stage = AdaptiveStage::filter;
+    if (Sign s; filter_decides(det, errbound, s)) [[likely]]
+        return s;
+    return orient2d_adapt(a, b, c, detsum, *stage);
+}
+
+// ---- incircle ---------------------------------------------------------------------------
+
+[[gnu::noinline]] Sign incircle_adapt(Point2 a, Point2 b, Point2 c, Point2 d, double permanent,
+                                      AdaptiveStage& stage) {
+    if (!expansion_safe({a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y}, 4, incircle_max_log)) {
+        stage = AdaptiveStage::gmp;
+        return GmpExactKernel::incircle(a, b, c, d);
+    }
+    const double adx = a.x - d.x, ady = a.y - d.y, bdx = b.x - d.x, bdy = b.y - d.y;
+    const double cdx = c.x - d.x, cdy = c.y - d.y;
+
+    // Stage B: the determinant of the rounded differences, exactly.
+    const Expansion exact_of_rounded = detail::incircle_of_differences<Expansion>(
+        adx, ady, bdx, bdy, cdx, cdy);
+    double det = exact_of_rounded.estimate();
+    double errbound = eb::icc_b * permanent;
+    stage = AdaptiveStage::stage_b;
+    if (det > errbound) return Sign::positive;
+    if (-det > errbound) return Sign::negative;
+
+    const double adxtail = detail::two_diff_tail(a.x, d.x, adx);
+    const double adytail = detail::two_diff_tail(a.y, d.y, ady);
+    const double bdxtail = detail::two_diff_tail(b.x, d.x, bdx);
+    const double bdytail = detail::two_diff_tail(b.y, d.y, bdy);
+    const double cdxtail = detail::two_diff_tail(c.x, d.x, cdx);
+    const double cdytail = detail::two_diff_tail(c.y, d.y, cdy);
+    if (adxtail == 0 && bdxtail == 0 && cdxtail == 0 && adytail == 0 && bdytail == 0 &&
+        cdytail == 0) {
+        return exact_of_rounded.sign();
+    }
+
+    // Stage C: Shewchuk's first-order tail correction.
+    stage = AdaptiveStage::stage_c;
+    errbound = eb::icc_c * permanent + eb::result_err * std::fabs(det);
+    det += ((adx * adx + ady * ady) *
+                ((bdx * cdytail + cdy * bdxtail) - (bdy * cdxtail + cdx * bdytail)) +
+            2.0 * (adx * adxtail + ady * adytail) * (bdx * cdy - bdy * cdx)) +
+           ((bdx * bdx + bdy * bdy) *
+                ((cdx * adytail + ady * cdxtail) - (cdy * adxtail + adx * cdytail)) +
+            2.0 * (bdx * bdxtail + bdy * bdytail) * (cdx * ady - cdy * adx)) +
+           ((cdx * cdx + cdy * cdy) *
+                ((adx * bdytail + bdy * adxtail) - (ady * bdxtail + bdx * adytail)) +
+            2.0 * (cdx * cdxtail + cdy * cdytail) * (adx * bdy - ady * bdx));
+    if (det > errbound) return Sign::positive;
+    if (-det > errbound) return Sign::negative;
+
+    stage = AdaptiveStage::exact;
+    return detail::incircle_formula<Expansion>(a, b, c, d, lift_expansion);
+}
+
+inline Sign incircle_impl(Point2 a, Point2 b, Point2 c, Point2 d, AdaptiveStage* stage) {
+    const double adx = a.x - d.x, ady = a.y - d.y, bdx = b.x - d.x, bdy = b.y - d.y;
+    const double cdx = c.x - d.x, cdy = c.y - d.y;
+
+    const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+    const double cdxady = cdx * ady, adxcdy = adx * cdy;
+    const double adxbdy = adx * bdy, bdxady = bdx * ady;
+    const double alift = adx * adx + ady * ady;
+    const double blift = bdx * bdx + bdy * bdy;
+    const double clift = cdx * cdx + cdy * cdy;
+    const double det =
+        alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
+
+    const double sa = std::fabs(bdxcdy) + std::fabs(cdxbdy);
+    const double sb = std::fabs(cdxady) + std::fabs(adxcdy);
+    const double sc = std::fabs(adxbdy) + std::fabs(bdxady);
+    const double permanent = sa * alift + sb * blift + sc * clift;
+    // The second term bounds what gradual underflow can add (constants.hpp).
+    const double errbound = eb::icc_a * permanent +
+                            eb::underflow_incircle * (((alift + blift) + (clift + sa)) +
+                                                      ((sb + sc) + 1.0));
+    *stage = AdaptiveStage::filter;
+    if (Sign s; filter_decides(det, errbound, s)) [[likely]]
+        return s;
+    return incircle_adapt(a, b, c, d, permanent, *stage);
+}
+
+// ---- incircle_cosine --------------------------------------------------------------------
+
+/// The sign of a dot product (p - o).(q - o), filter then stages.
+Sign dot_sign_adapt(Point2 p, Point2 q, Point2 o, AdaptiveStage& stage) {
+    const double px = p.x - o.x, py = p.y - o.y, qx = q.x - o.x, qy = q.y - o.y;
+    const double first = px * qx, second = py * qy;
+    const double dot = first + second;
+    const double sum_abs = std::fabs(first) + std::fabs(second);
+    const double errbound = eb::ccw_a * sum_abs + eb::underflow_orient;
+    if (dot > errbound) return Sign::positive;
+    if (-dot > errbound) return Sign::negative;
+    return product_pair_adapt<true>({p.x, o.x, q.x, o.x, p.y, o.y, q.y, o.y}, sum_abs, stage);
+}
+
+[[gnu::noinline]] Sign incircle_cosine_adapt(Point2 a, Point2 b, Point2 c, Point2 d,
+                                             AdaptiveStage& stage) {
+    if (!expansion_safe({a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y}, 8, cosine_max_log)) {
+        stage = AdaptiveStage::gmp;
+        return GmpExactKernel::incircle_cosine(a, b, c, d);
+    }
+    // Exact signs of the two dot products: when they agree, that is the answer.
+    AdaptiveStage stage_u = AdaptiveStage::filter, stage_v = AdaptiveStage::filter;
+    const Sign su = dot_sign_adapt(a, b, d, stage_u);
+    const Sign sv = dot_sign_adapt(a, b, c, stage_v);
+    if (su == sv) {
+        stage = std::max(std::max(stage_u, stage_v), AdaptiveStage::stage_b);
+        return -su;
+    }
+    stage = AdaptiveStage::exact;
+    return detail::incircle_cosine_formula<Expansion>(a, b, c, d, lift_expansion);
+}
+
+inline Sign incircle_cosine_impl(Point2 a, Point2 b, Point2 c, Point2 d,
+                                 AdaptiveStage* stage) {
+    const double adx = a.x - d.x, ady = a.y - d.y, bdx = b.x - d.x, bdy = b.y - d.y;
+    const double acx = a.x - c.x, acy = a.y - c.y, bcx = b.x - c.x, bcy = b.y - c.y;
+    const double u1 = adx * bdx, u2 = ady * bdy, v1 = acx * bcx, v2 = acy * bcy;
+    const double u = u1 + u2;  // (a-d).(b-d)
+    const double v = v1 + v2;  // (a-c).(b-c)
+    const double eu = eb::ccw_a * (std::fabs(u1) + std::fabs(u2)) + eb::underflow_orient;
+    const double ev = eb::ccw_a * (std::fabs(v1) + std::fabs(v2)) + eb::underflow_orient;
+    *stage = AdaptiveStage::filter;
+    if (std::fabs(u) > eu && std::fabs(v) > ev) {
+        const Sign su = sign_of(u), sv = sign_of(v);
+        if (su == sv) return -su;
+
+        // Opposite signs: compare L = |a-c|^2 |b-c|^2 u^2 with R = |a-d|^2 |b-d|^2 v^2.
+        const double du = eu / (std::fabs(u) - eu), dv = ev / (std::fabs(v) - ev);
+        if (du <= eb::cos_max_dot_rel && dv <= eb::cos_max_dot_rel) {
+            const double ac2 = acx * acx + acy * acy, bc2 = bcx * bcx + bcy * bcy;
+            const double ad2 = adx * adx + ady * ady, bd2 = bdx * bdx + bdy * bdy;
+            const double uu = u * u, vv = v * v;
+            const double left_lengths = ac2 * bc2, right_lengths = ad2 * bd2;
+            const double left = left_lengths * uu, right = right_lengths * vv;
+            const double smallest =
+                std::min({ac2, bc2, ad2, bd2, uu, vv, left_lengths, right_lengths});
+            constexpr double largest = std::numeric_limits<double>::max();
+            // Written so that a NaN fails the test.
+            if (smallest >= eb::cos_min_factor && left <= largest && right <= largest) {
+                const double errbound = (eb::cos_rel + eb::cos_rel_dot * du) * left +
+                                        (eb::cos_rel + eb::cos_rel_dot * dv) * right;
+                const double diff = left - right;
+                if (diff > errbound) return -su;   // the d-term of E dominates
+                if (-diff > errbound) return -sv;  // the c-term of E dominates
+            }
+        }
+    }
+    return incircle_cosine_adapt(a, b, c, d, *stage);
+}
+
+}  // namespace
+
+// ---- The kernel -------------------------------------------------------------------------
+
+Sign orient2d_staged(Point2 a, Point2 b, Point2 c, AdaptiveStage& stage) {
+    return detail::in_standard_environment<orient2d_impl>(a, b, c, &stage);
+}
+
+Sign incircle_staged(Point2 a, Point2 b, Point2 c, Point2 d, AdaptiveStage& stage) {
+    return detail::in_standard_environment<incircle_impl>(a, b, c, d, &stage);
+}
+
+Sign incircle_cosine_staged(Point2 a, Point2 b, Point2 c, Point2 d, AdaptiveStage& stage) {
+    return detail::in_standard_environment<incircle_cosine_impl>(a, b, c, d, &stage);
+}
+
+Sign AdaptiveKernel::orient2d(Point2 a, Point2 b, Point2 c) {
+    AdaptiveStage stage;
+    return orient2d_staged(a, b, c, stage);
+}
+
+Sign AdaptiveKernel::incircle(Point2 a, Point2 b, Point2 c, Point2 d) {
+    AdaptiveStage stage;
+    return incircle_staged(a, b, c, d, stage);
+}
+
+Sign AdaptiveKernel::incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d) {
+    AdaptiveStage stage;
+    return incircle_cosine_staged(a, b, c, d, stage);
+}
+
+}  // namespace exidel
