@@ -12,7 +12,8 @@
 #include <cmath>
 #include <cstddef>
 #include <utility>
-#include <vector>
+
+#include <boost/container/small_vector.hpp>
 
 #include "exidel/predicates/types.hpp"
 #include "fp_hygiene.hpp"
@@ -68,9 +69,65 @@ inline void two_two_sum(double a1, double a0, double b1, double b0, double x[4])
     two_sum(j, i, x[3], x[2]);
 }
 
-/// An exact sum of doubles. The component vector lives on the heap: expansions are the
-/// rare slow path, and clarity wins there.
+// ---- Fixed-size expansion arithmetic on raw arrays ---------------------------------------
+// For the adaptive stages, whose expansion lengths are bounded and known: no allocation,
+// the caller provides the output array (length at most elen + flen, resp. 2 elen).
+
+/// h = e + f (Shewchuk's fast_expansion_sum_zeroelim, merging by magnitude on the fly).
+/// Returns the length of h; h may not alias e or f.
+inline int expansion_sum(int elen, const double* e, int flen, const double* f, double* h) {
+    int i = 0, j = 0, n = 0;
+    auto next = [&]() {
+        if (j == flen || (i < elen && std::fabs(e[i]) < std::fabs(f[j]))) return e[i++];
+        return f[j++];
+    };
+    if (elen + flen == 0) return 0;
+    double q = next();
+    while (i + j < elen + flen) {
+        double qn, hh;
+        two_sum(q, next(), qn, hh);
+        if (hh != 0) h[n++] = hh;
+        q = qn;
+    }
+    if (q != 0) h[n++] = q;
+    return n;
+}
+
+/// h = e * b (Shewchuk's scale_expansion_zeroelim). Returns the length of h (<= 2 elen).
+inline int expansion_scale(int elen, const double* e, double b, double* h) {
+    if (elen == 0 || b == 0) return 0;
+    int n = 0;
+    double q, hh;
+    two_product(e[0], b, q, hh);
+    if (hh != 0) h[n++] = hh;
+    for (int i = 1; i < elen; ++i) {
+        double p1, p0, s;
+        two_product(e[i], b, p1, p0);
+        two_sum(q, p0, s, hh);
+        if (hh != 0) h[n++] = hh;
+        two_sum(p1, s, q, hh);
+        if (hh != 0) h[n++] = hh;
+    }
+    if (q != 0) h[n++] = q;
+    return n;
+}
+
+/// Sign of an expansion of length n (its largest component is the last one).
+inline Sign expansion_sign(int n, const double* e) { return n == 0 ? Sign::zero : sign_of(e[n - 1]); }
+
+/// A floating approximation of an expansion's value.
+inline double expansion_estimate(int n, const double* e) {
+    double s = 0;
+    for (int i = 0; i < n; ++i) s += e[i];
+    return s;
+}
+
+/// An exact sum of doubles. Components live in an inline buffer large enough for every
+/// stage-B and stage-C expansion of the kernel, so the adaptive stages do not allocate; only
+/// the rare fully exact stage of incircle and incircle_cosine can spill to the heap.
 class Expansion {
+    using Components = boost::container::small_vector<double, 64>;
+
 public:
     Expansion() = default;
     Expansion(double v) {  // NOLINT: implicit, so formulas can lift doubles
@@ -93,13 +150,15 @@ public:
         return s;
     }
 
-    friend Expansion operator+(const Expansion& e, const Expansion& f) { return sum(e, f); }
+    friend Expansion operator+(const Expansion& e, const Expansion& f) { return sum(e, f, 1.0); }
     friend Expansion operator-(const Expansion& e, const Expansion& f) {
-        return sum(e, f.negated());
+        return sum(e, f, -1.0);
     }
     friend Expansion operator*(const Expansion& e, const Expansion& f) {
+        const Expansion& small = e.c_.size() <= f.c_.size() ? e : f;
+        const Expansion& large = e.c_.size() <= f.c_.size() ? f : e;
         Expansion r;
-        for (double b : f.c_) r = sum(r, e.scaled(b));
+        for (double b : small.c_) r = sum(r, large.scaled(b), 1.0);
         r.compress();
         return r;
     }
@@ -114,35 +173,27 @@ public:
     }
 
 private:
-    Expansion negated() const {
-        Expansion r = *this;
-        for (double& v : r.c_) v = -v;
-        return r;
-    }
-
-    /// Shewchuk's fast expansion sum with zero elimination: merge the components by
-    /// magnitude, then one pass of Two-Sum.
-    static Expansion sum(const Expansion& e, const Expansion& f) {
-        if (e.c_.empty()) return f;
-        if (f.c_.empty()) return e;
-        std::vector<double> g;
-        g.reserve(e.c_.size() + f.c_.size());
-        std::size_t i = 0, j = 0;
-        while (i < e.c_.size() && j < f.c_.size()) {
-            g.push_back(std::fabs(e.c_[i]) < std::fabs(f.c_[j]) ? e.c_[i++] : f.c_[j++]);
-        }
-        while (i < e.c_.size()) g.push_back(e.c_[i++]);
-        while (j < f.c_.size()) g.push_back(f.c_[j++]);
+    /// e + f_sign * f (f_sign is +1 or -1, so negation is exact): Shewchuk's fast expansion
+    /// sum with zero elimination, merging the components by magnitude on the fly into one
+    /// pass of Two-Sum.
+    static Expansion sum(const Expansion& e, const Expansion& f, double f_sign) {
         Expansion h;
-        double q = g[0];
-        for (std::size_t k = 1; k < g.size(); ++k) {
+        const std::size_t ne = e.c_.size(), nf = f.c_.size();
+        if (ne + nf == 0) return h;
+        h.c_.reserve(ne + nf);
+        std::size_t i = 0, j = 0;
+        auto next = [&]() {
+            if (j == nf || (i < ne && std::fabs(e.c_[i]) < std::fabs(f.c_[j]))) return e.c_[i++];
+            return f_sign * f.c_[j++];
+        };
+        double q = next();
+        while (i + j < ne + nf) {
             double qn, hh;
-            two_sum(q, g[k], qn, hh);
+            two_sum(q, next(), qn, hh);
             if (hh != 0) h.c_.push_back(hh);
             q = qn;
         }
-        if (q != 0 || h.c_.empty()) h.c_.push_back(q);
-        if (h.c_.size() == 1 && h.c_[0] == 0) h.c_.clear();
+        if (q != 0) h.c_.push_back(q);
         return h;
     }
 
@@ -150,6 +201,7 @@ private:
     Expansion scaled(double b) const {
         Expansion h;
         if (c_.empty() || b == 0) return h;
+        h.c_.reserve(2 * c_.size());
         double q, hh;
         two_product(c_[0], b, q, hh);
         if (hh != 0) h.c_.push_back(hh);
@@ -161,8 +213,7 @@ private:
             two_sum(p1, s, q, hh);
             if (hh != 0) h.c_.push_back(hh);
         }
-        if (q != 0 || h.c_.empty()) h.c_.push_back(q);
-        if (h.c_.size() == 1 && h.c_[0] == 0) h.c_.clear();
+        if (q != 0) h.c_.push_back(q);
         return h;
     }
 
@@ -170,7 +221,7 @@ private:
     void compress() {
         const std::size_t n = c_.size();
         if (n < 2) return;
-        std::vector<double> g(n);
+        Components g(n);
         std::size_t bottom = n - 1;
         double q = c_[n - 1];
         for (std::size_t k = n - 1; k-- > 0;) {
@@ -184,19 +235,18 @@ private:
             }
         }
         g[bottom] = q;
-        std::vector<double> h;
+        Components h;
         for (std::size_t k = bottom + 1; k < n; ++k) {
             double qn, r;
             two_sum(g[k], q, qn, r);
             if (r != 0) h.push_back(r);
             q = qn;
         }
-        if (q != 0 || h.empty()) h.push_back(q);
-        if (h.size() == 1 && h[0] == 0) h.clear();
+        if (q != 0) h.push_back(q);
         c_ = std::move(h);
     }
 
-    std::vector<double> c_;
+    Components c_;
 };
 
 }  // namespace exidel::detail

@@ -19,7 +19,14 @@
 
 namespace exidel {
 
-/// Which stage of the adaptive kernel decided a call (for the `stages` study).
+/// Which stage of the adaptive kernel decided a call (for the `stages` study):
+///   filter   the floating-point filter (stage A);
+///   stage_b  the exact value of the rounded differences (Shewchuk's stage B); for
+///            incircle_cosine, the exact signs of the two dot products;
+///   stage_c  the first-order tail correction (Shewchuk's stage C);
+///   exact    exact arithmetic inside the range where expansions are error-free (for the
+///            degree-8 comparison of incircle_cosine: cpp_int integers, measured cheaper);
+///   gmp      magnitudes outside that range: exact GMP integers.
 enum class AdaptiveStage : int { filter = 0, stage_b = 1, stage_c = 2, exact = 3, gmp = 4 };
 inline constexpr int adaptive_stage_count = 5;
 
