@@ -217,10 +217,12 @@ int incircle_of_rounded_differences(double adx, double ady, double bdx, double b
     return detail::incircle_formula<Expansion>(a, b, c, d, lift_expansion);
 }
 
-inline Sign incircle_impl(Point2 a, Point2 b, Point2 c, Point2 d, AdaptiveStage* stage) {
+/// Shewchuk's stage A: a bound relative to the permanent, tighter than the semi-static one
+/// near degeneracy. Out of line, so the semi-static fast path keeps few values live.
+[[gnu::noinline]] Sign incircle_stage_a(Point2 a, Point2 b, Point2 c, Point2 d,
+                                        AdaptiveStage& stage) {
     const double adx = a.x - d.x, ady = a.y - d.y, bdx = b.x - d.x, bdy = b.y - d.y;
     const double cdx = c.x - d.x, cdy = c.y - d.y;
-
     const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
     const double cdxady = cdx * ady, adxcdy = adx * cdy;
     const double adxbdy = adx * bdy, bdxady = bdx * ady;
@@ -229,7 +231,6 @@ inline Sign incircle_impl(Point2 a, Point2 b, Point2 c, Point2 d, AdaptiveStage*
     const double clift = cdx * cdx + cdy * cdy;
     const double det =
         alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
-
     const double sa = std::fabs(bdxcdy) + std::fabs(cdxbdy);
     const double sb = std::fabs(cdxady) + std::fabs(adxcdy);
     const double sc = std::fabs(adxbdy) + std::fabs(bdxady);
@@ -238,10 +239,28 @@ inline Sign incircle_impl(Point2 a, Point2 b, Point2 c, Point2 d, AdaptiveStage*
     const double errbound = eb::icc_a * permanent +
                             eb::underflow_incircle * (((alift + blift) + (clift + sa)) +
                                                       ((sb + sc) + 1.0));
+    stage = AdaptiveStage::filter;
+    if (Sign s; filter_decides(det, errbound, s)) return s;
+    return incircle_adapt(a, b, c, d, permanent, stage);
+}
+
+inline Sign incircle_impl(Point2 a, Point2 b, Point2 c, Point2 d, AdaptiveStage* stage) {
+    const double adx = a.x - d.x, ady = a.y - d.y, bdx = b.x - d.x, bdy = b.y - d.y;
+    const double cdx = c.x - d.x, cdy = c.y - d.y;
+    // Semi-static filter: one bound from the largest difference (constants.hpp). The
+    // expression is stage A's, operation for operation.
+    const double m = std::max({std::fabs(adx), std::fabs(ady), std::fabs(bdx), std::fabs(bdy),
+                               std::fabs(cdx), std::fabs(cdy)});
+    const double det = (adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) +
+                       (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
+                       (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
     *stage = AdaptiveStage::filter;
-    if (Sign s; filter_decides(det, errbound, s)) [[likely]]
-        return s;
-    return incircle_adapt(a, b, c, d, permanent, *stage);
+    if (m >= eb::icc_static_min && m <= eb::icc_static_max) [[likely]] {
+        const double m2 = m * m;
+        if (Sign s; filter_decides(det, eb::icc_static * (m2 * m2), s)) [[likely]]
+            return s;
+    }
+    return incircle_stage_a(a, b, c, d, *stage);
 }
 
 // ---- incircle_cosine --------------------------------------------------------------------
@@ -300,8 +319,9 @@ inline Sign incircle_cosine_impl(Point2 a, Point2 b, Point2 c, Point2 d,
             const double uu = u * u, vv = v * v;
             const double left_lengths = ac2 * bc2, right_lengths = ad2 * bd2;
             const double left = left_lengths * uu, right = right_lengths * vv;
-            const double smallest =
-                std::min({ac2, bc2, ad2, bd2, uu, vv, left_lengths, right_lengths});
+            // Nothing subnormal: not a factor, not a partial product, not a side.
+            const double smallest = std::min(
+                {ac2, bc2, ad2, bd2, uu, vv, left_lengths, right_lengths, left, right});
             constexpr double largest = std::numeric_limits<double>::max();
             // Written so that a NaN fails the test.
             if (smallest >= eb::cos_min_factor && left <= largest && right <= largest) {

@@ -1,0 +1,143 @@
+// exidel proofs: checks every error-bound constant of predicates/ against the value the
+// proofs establish (proofs/README.md). The proven values come from the file that
+// proofs/derive_bounds.py writes from Gappa's output; the code's values come from
+// constants.hpp itself (included, so the compiler reads the real ones) and, for the range
+// limits that live in adaptive.cpp, from that source file.
+//
+// Usage: check_constants BOUNDS_FILE ADAPTIVE_CPP CONSTANTS_HPP
+// Exit code 0 iff every claim holds, every constant has a claim, and every
+// `inline constexpr double` of constants.hpp (but epsilon) is in the list below.
+#include <boost/multiprecision/cpp_int.hpp>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "exidel/predicates/constants.hpp"
+
+namespace {
+
+using Rational = boost::multiprecision::cpp_rational;
+
+// Every constant of constants.hpp that is an error bound or a hypothesis of one. A new
+// constant must be added here and get a claim, or the check fails (no silent drift).
+std::map<std::string, Rational> code_constants() {
+    namespace b = exidel::bounds;
+    // cpp_rational(double) is exact: a double is a dyadic rational.
+    return {
+        {"ccw_a", Rational(b::ccw_a)},
+        {"ccw_b", Rational(b::ccw_b)},
+        {"ccw_c", Rational(b::ccw_c)},
+        {"result_err", Rational(b::result_err)},
+        {"icc_a", Rational(b::icc_a)},
+        {"icc_b", Rational(b::icc_b)},
+        {"icc_c", Rational(b::icc_c)},
+        {"icc_static", Rational(b::icc_static)},
+        {"icc_static_min", Rational(b::icc_static_min)},
+        {"icc_static_max", Rational(b::icc_static_max)},
+        {"underflow_orient", Rational(b::underflow_orient)},
+        {"underflow_incircle", Rational(b::underflow_incircle)},
+        {"cos_rel", Rational(b::cos_rel)},
+        {"cos_rel_dot", Rational(b::cos_rel_dot)},
+        {"cos_max_dot_rel", Rational(b::cos_max_dot_rel)},
+        {"cos_min_factor", Rational(b::cos_min_factor)},
+    };
+}
+
+std::string read_file(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw std::runtime_error("cannot open " + path);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+// The range limits of adaptive.cpp: `constexpr int orient_max_log = 500;` and the degree
+// passed beside each in `expansion_safe({...}, 2, orient_max_log)`.
+void add_range_limits(const std::string& source, std::map<std::string, Rational>& values) {
+    const std::regex limit(R"(constexpr\s+int\s+(\w+_max_log)\s*=\s*(\d+)\s*;)");
+    for (std::sregex_iterator it(source.begin(), source.end(), limit), end; it != end; ++it) {
+        values[(*it)[1]] = Rational((*it)[2].str());
+    }
+    const std::regex call(R"(expansion_safe\(\{[^}]*\},\s*(\d+),\s*(\w+)_max_log\))");
+    for (std::sregex_iterator it(source.begin(), source.end(), call), end; it != end; ++it) {
+        values[(*it)[2].str() + "_degree"] = Rational((*it)[1].str());
+    }
+}
+
+// The list in code_constants() is written by hand; this makes sure it is complete.
+int unlisted_constants(const std::string& header, const std::map<std::string, Rational>& values) {
+    const std::regex declaration(R"(inline\s+constexpr\s+double\s+(\w+)\s*=)");
+    int missing = 0;
+    for (std::sregex_iterator it(header.begin(), header.end(), declaration), end; it != end;
+         ++it) {
+        const std::string name = (*it)[1];
+        if (name != "epsilon" && !values.contains(name)) {
+            std::cout << "FAIL " << name << ": in constants.hpp but not checked by "
+                      << "check_constants.cpp (add it to code_constants() and give it a proof)\n";
+            ++missing;
+        }
+    }
+    return missing;
+}
+
+std::string show(const Rational& r) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.17g", r.convert_to<double>());
+    return buf;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 4) {
+        std::cerr << "usage: check_constants BOUNDS_FILE ADAPTIVE_CPP CONSTANTS_HPP\n";
+        return 2;
+    }
+    try {
+        std::map<std::string, Rational> values = code_constants();
+        add_range_limits(read_file(argv[2]), values);
+
+        std::istringstream bounds(read_file(argv[1]));
+        std::set<std::string> claimed;
+        int failures = unlisted_constants(read_file(argv[3]), values);
+        std::string line;
+        while (std::getline(bounds, line)) {
+            if (line.empty() || line[0] == '#') continue;
+            std::istringstream fields(line);
+            std::string name, kind, value;
+            if (!(fields >> name >> kind >> value) || (kind != "min" && kind != "max")) {
+                throw std::runtime_error("malformed line in bounds file: " + line);
+            }
+            const Rational proven(value);
+            const auto found = values.find(name);
+            if (found == values.end()) {
+                std::cout << "FAIL " << name << ": proven, but not found in the code\n";
+                ++failures;
+                continue;
+            }
+            claimed.insert(name);
+            const Rational& code = found->second;
+            const bool ok = kind == "min" ? code >= proven : code <= proven;
+            std::cout << (ok ? "ok   " : "FAIL ") << name << " = " << show(code)
+                      << (kind == "min" ? " >= " : " <= ") << show(proven) << " (proven"
+                      << (ok ? "" : "; the code's value is outside the proven range") << ")\n";
+            failures += ok ? 0 : 1;
+        }
+        for (const auto& [name, code] : values) {
+            if (!claimed.contains(name)) {
+                std::cout << "FAIL " << name << " = " << show(code) << ": no proof claims it\n";
+                ++failures;
+            }
+        }
+        std::cout << (failures == 0 ? "all constants proven\n" : "constants NOT proven\n");
+        return failures == 0 ? 0 : 1;
+    } catch (const std::exception& error) {
+        std::cerr << "check_constants: " << error.what() << "\n";
+        return 2;
+    }
+}

@@ -1,0 +1,164 @@
+#!/usr/bin/env python3
+"""Run the Gappa scripts in proofs/gappa/, read the intervals Gappa proved, and combine them
+into the smallest safe value of every constant of predicates/ (bounds.md writes out each
+combination; this script is that text as exact rational arithmetic).
+
+Usage: derive_bounds.py GAPPA OUTPUT
+Writes OUTPUT with one line per claim:  name kind p/q  (exact rational)
+  kind `min`: the code's value must be >= p/q;  kind `max`: it must be <= p/q.
+Exit code non-zero when Gappa fails to prove a goal or prints something unexpected.
+"""
+import re
+import subprocess
+import sys
+from fractions import Fraction as Q
+from math import floor, log2
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+NUMBER = r"-?\d+(?:b-?\d+)?"
+RESULT = re.compile(r"^\s*(.+?) in \[(" + NUMBER + r")(?: \{[^}]*\})?, (" + NUMBER + r")(?: \{[^}]*\})?\]\s*$")
+
+
+def gappa_number(text):
+    """Gappa prints exact dyadic numbers as MbE (M * 2^E) or plain integers."""
+    mantissa, _, exponent = text.partition("b")
+    return Q(int(mantissa)) * (Q(2) ** int(exponent or 0))
+
+
+def run_gappa(gappa, script):
+    """The proven interval of every goal of `script`, keyed by Gappa's spelling of it."""
+    proc = subprocess.run([gappa, str(HERE / "gappa" / script)], capture_output=True, text=True)
+    out = proc.stdout + proc.stderr
+    if proc.returncode != 0 or "not satisfied" in out:
+        sys.exit(f"{script}: Gappa did not prove every goal:\n{out}")
+    goals = {}
+    for line in out.splitlines():
+        m = RESULT.match(line)
+        if m:
+            goals[m.group(1)] = (gappa_number(m.group(2)), gappa_number(m.group(3)))
+    if not goals:
+        sys.exit(f"{script}: no result in Gappa's output:\n{out}")
+    return goals
+
+
+def magnitude(goals, key):
+    lo, hi = goals[key]
+    return max(abs(lo), abs(hi))
+
+
+def main():
+    gappa, output = sys.argv[1], Path(sys.argv[2])
+
+    # ---- Lemmas (Gappa) -----------------------------------------------------------------
+    rnd = run_gappa(gappa, "rounding.g")
+    eps_exact = magnitude(rnd, "float<53,-1074,ne>(x) -/ x")
+    res = run_gappa(gappa, "rounding_result.g")
+    eps_result = max(magnitude(res, "(xp - zp) / zp"), magnitude(res, "(xn - zn) / zn"))
+    e = max(eps_exact, eps_result)  # one rounding, either way round
+    under = run_gappa(gappa, "underflow.g")
+    eta = max(magnitude(under, "p - a * b"), magnitude(under, "s - (a + b)"))
+    term = run_gappa(gappa, "orient_term.g")
+    term_rel = (1 + magnitude(term, "P -/ Lx")) * (1 + magnitude(term, "L -/ P")) - 1
+
+    def delta(k):
+        """k roundings compose to a relative error of at most (1 + e)^k - 1."""
+        return (1 + e) ** k - 1
+
+    if term_rel > delta(3):
+        sys.exit(f"orient_term.g: Gappa's term error {float(term_rel)} exceeds (1+e)^3-1")
+
+    claims = []
+
+    # ---- orient2d and the dot products, stage A (bounds.md#orient2d) ----------------------
+    # |D - Dx| <= e|D| + d3 (|L|+|R|) + U,  |L|+|R| <= (1+e) T,  errbound >= (ccw_a T/(1+e) - eta
+    # + underflow)/(1+e); the sign is right when d3 (1+e) T + U <= (1-e) errbound.
+    claims.append(("ccw_a", "min", delta(3) * (1 + e) ** 3 / (1 - e)))
+    u_orient = 2 * (1 + 2 * delta(3)) * eta + eta  # two products, the subtraction
+    claims.append(("underflow_orient", "min", eta + u_orient * (1 + e) / (1 - e)))
+
+    # ---- incircle, stage A (bounds.md#incircle) -----------------------------------------
+    # Error of one term alift * (P1 - P2), relative to alift * (|P1| + |P2|):
+    c_term = ((1 + delta(4)) * (e * (1 + e) + delta(3))  # the cross difference, scaled by alift
+              + delta(4) * (1 + e)                        # the lift's four roundings
+              + e * (1 + e) ** 2                          # the product's rounding
+              + e * (1 + e) ** 2)                         # the first sum's rounding
+    # (1+e)^4: computed sa and permanent against the exact ones; (1+e)^2 the bound's roundings.
+    claims.append(("icc_a", "min", c_term * (1 + e) ** 6 / (1 - e)))
+    # Underflow: 2 eta per lift and per cross difference (scaled by the partner), 6 eta for
+    # the three outer products, two sums and the bound's product; (1+e)^3 the sum X.
+    k_under = max(2 * (1 + e) ** 4, 7 * (1 + e) ** 5)
+    claims.append(("underflow_incircle", "min", k_under * eta * (1 + e) ** 4 / (1 - e)))
+
+    # ---- incircle, semi-static filter (bounds.md#incircle-semi-static) ---------------------
+    # M = max |x| over the six rounded differences x; hypotheses (checked against the code):
+    # 2^-240 <= M <= 2^250. Everything below is a multiple of M^4.
+    m_min, m_max = Q(2) ** -240, Q(2) ** 250
+    claims.append(("icc_static_min", "min", m_min))
+    claims.append(("icc_static_max", "max", m_max))
+    # (1) D(x) against D(X): 12 monomials, each |m(x)| <= M^4, x = X (1 + d), |d| <= e.
+    diffs = 12 * ((1 - e) ** -4 - 1)
+    # (2) evaluating D(x): per term L P with L <= 2M^2, |P| <= 2M^2 (in units of M^4):
+    #   |L~ - L| <= delta(2) 2,  |P~ - P| <= e (2 + e) 2,  |L~|, |P~| <= (1+e)^2 2,
+    #   |T~ - L P| <= |L~ - L||P~| + L |P~ - P| + e |L~ P~|,  |T~| <= (1+e)^5 4.
+    term = 4 * (delta(2) * (1 + e) ** 2 + e * (2 + e) + e * (1 + e) ** 4)
+    sums = e * 8 * (1 + e) ** 5 + e * (8 * (1 + e) ** 6 + 4 * (1 + e) ** 5)
+    # Underflow: 15 products, each at most eta, scaled by a partner <= (1+e)^2 2M^2; with
+    # M >= 2^-240, eta M^2 <= eta 2^480 M^4.
+    under = 15 * eta * 2 * (1 + e) ** 2 * Q(2) ** 480 + 3 * eta * Q(2) ** 960
+    total = diffs + 3 * term + sums + under
+    # The bound is computed as fl(icc_static * fl(fl(M M) fl(M M))): three roundings down.
+    claims.append(("icc_static", "min", total / (1 - e) ** 3))
+
+    # ---- stages B and C: first-order counts only (bounds.md#stages-b-and-c) ----------------
+    claims.append(("ccw_b", "min", delta(2)))  # two rounded differences per product
+    claims.append(("icc_b", "min", delta(4)))  # four per term (lift: 2, cross product: 2)
+    claims.append(("result_err", "min", delta(3)))  # estimate, correction, final sum
+    claims.append(("ccw_c", "min", 9 * e * e))  # Shewchuk's second-order count, see bounds.md
+    claims.append(("icc_c", "min", 44 * e * e))
+
+    # ---- the cosine squared comparison (bounds.md#cosine) -------------------------------
+    # Hypotheses of the derivation, themselves checked against the code: the filter is tried
+    # only for du, dv <= 1/4, and only when every guarded factor is >= 2^-1000.
+    dmax, cmf = Q(1, 4), Q(2) ** -1000
+    claims.append(("cos_max_dot_rel", "max", dmax))
+    claims.append(("cos_min_factor", "min", cmf))
+
+    def lam(du):
+        """Relative error of L~ (relative to the result) when the computed du is `du`."""
+        gamma = e + du * (1 + e) ** 2  # u~ against u: e|u~| + eu, du rounded twice
+        squares = 4 * 2 * eta / cmf * (1 + e) ** 2  # underflowed squares in 4 lengths
+        return (1 + e) ** 11 * (1 + gamma) ** 2 - 1 + squares
+
+    factor = (1 + e) / (1 - e) ** 4  # the comparison's and the bound's own roundings
+    cos_rel_min = lam(Q(0)) * factor
+    claims.append(("cos_rel", "min", cos_rel_min))
+    # lam is convex in du and the bound is linear: both end points suffice. With
+    # cos_rel >= cos_rel_min, this cos_rel_dot makes the line pass above lam at du = dmax.
+    claims.append(("cos_rel_dot", "min", (lam(dmax) * factor - cos_rel_min) / dmax))
+
+    # ---- expansion range (bounds.md#expansion-range) -------------------------------------
+    for script, name, degree, key in (("range_orient.g", "orient_max_log", 2, None),
+                                      ("range_incircle.g", "incircle_max_log", 4, "tree")):
+        # (incircle_cosine's exact stage uses cpp_int, which has no range limit; its dot
+        # products run the orient2d-shaped stages under orient_max_log.)
+        goals = run_gappa(gappa, script)
+        k = magnitude(goals, key or next(iter(goals)))
+        # K 2^(d (E + 1)) <= 2^1023
+        claims.append((name, "max", Q(floor((1023 - log2(k)) / degree) - 1)))
+        # expansion_safe's granularity test needs at least the polynomial's degree
+        # (sympy/cosine_check.py checks these degrees symbolically).
+        claims.append((name.replace("max_log", "degree"), "min", Q(degree)))
+
+    with open(output, "w") as f:
+        f.write("# Proven bounds, written by proofs/derive_bounds.py from Gappa's output.\n")
+        for name, kind, value in claims:
+            f.write(f"{name} {kind} {value.numerator}/{value.denominator}\n")
+    for name, kind, value in claims:
+        unit = "eps" if value < Q(1, 2**40) and value > Q(1, 2**70) else ""
+        shown = float(value / Q(1, 2**53)) if unit else float(value)
+        print(f"{name:20s} {kind} {shown!r} {unit}")
+
+
+if __name__ == "__main__":
+    main()
