@@ -3,7 +3,7 @@
 // The instrument for precision research: exactly the same operations, in the same order,
 // as FloatingKernel, each rounded to nearest at `bits` bits of significand. Inputs are
 // doubles, so every coordinate is exact at bits >= 53. For bits at or above the counts in
-// proofs/ (2b+3 for orient2d, 4b+8 for incircle, 8b+13 for incircle_cosine, b = 53 + the
+// proofs/bitcounts.md (2b+3 for orient2d, 4b+8 for incircle, 8b+12 for incircle_cosine, b = 53 + the
 // exponent spread of the query) every result equals the exact kernel's.
 #pragma once
 

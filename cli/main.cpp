@@ -1,0 +1,78 @@
+// exidel: the command-line entry point. Dispatches `exidel <command> [options]` to one
+// function per subcommand, each in its own file (see commands.hpp).
+#include <array>
+#include <exception>
+#include <iostream>
+#include <string_view>
+#include <vector>
+
+#include "commands.hpp"
+
+namespace {
+
+using exidel::cli::exit_failure;
+using exidel::cli::exit_ok;
+using exidel::cli::exit_usage;
+
+struct Command {
+    std::string_view name;
+    std::string_view summary;
+    int (*run)(std::span<const std::string_view> args);
+};
+
+// One row per subcommand, in the order `exidel --help` lists them.
+constexpr std::array commands{
+    Command{"predicate", "evaluate predicates on queries read from a file or stdin",
+            &exidel::cli::predicate_command},
+    Command{"triangulate", "Delaunay triangulation of points read from a file or stdin",
+            &exidel::cli::triangulate_command},
+    Command{"study", "failure maps, precision sweeps, triangulation outcomes, adaptive stages",
+            &exidel::cli::study_command},
+};
+
+void print_usage(std::ostream& os) {
+    os << "usage: exidel <command> [options]\n"
+          "       exidel <command> --help\n"
+          "       exidel --version\n\n"
+          "commands:\n";
+    for (const Command& c : commands) {
+        os << "  " << c.name << std::string(c.name.size() < 12 ? 12 - c.name.size() : 1, ' ')
+           << c.summary << '\n';
+    }
+    os << "\nExit status: 0 success, 1 failure (bad input data, I/O), 2 bad usage.\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::ios::sync_with_stdio(false);  // output is one short line per query: keep it buffered
+    const std::vector<std::string_view> args(argv + (argc > 0 ? 1 : 0), argv + argc);
+    if (args.empty()) {
+        print_usage(std::cerr);
+        return exit_usage;
+    }
+    const std::string_view first = args.front();
+    if (first == "-h" || first == "--help" || first == "help") {
+        print_usage(std::cout);
+        return exit_ok;
+    }
+    if (first == "--version") {
+        std::cout << "exidel " << EXIDEL_VERSION << '\n';
+        return exit_ok;
+    }
+    for (const Command& c : commands) {
+        if (c.name != first) continue;
+        try {
+            return c.run(std::span(args).subspan(1));
+        } catch (const std::exception& e) {
+            // Only resource exhaustion gets here (an exact kernel out of memory): report it
+            // instead of terminating.
+            std::cout.flush();
+            std::cerr << "exidel: " << e.what() << '\n';
+            return exit_failure;
+        }
+    }
+    std::cerr << "exidel: unknown command '" << first << "'\n\n";
+    print_usage(std::cerr);
+    return exit_usage;
+}

@@ -1,0 +1,61 @@
+// exidel CLI (internal): the text format of `exidel predicate`, parsed without I/O.
+//
+// One query per line:
+//   orient2d        ax ay bx by cx cy
+//   incircle        ax ay bx by cx cy dx dy
+//   incircle_cosine ax ay bx by cx cy dx dy
+// Tokens are separated by blanks (space, tab, CR, VT, FF). Everything from the first '#'
+// to the end of the line is a comment; a line that is blank after removing the comment
+// holds no query. Coordinates are decimal ("0.1", "-1e-300") or C99 hexadecimal floats
+// ("0x1.8p-3", "-0X1P+4"), rounded to the nearest double (ties to even).
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "exidel/io/number.hpp"
+#include "exidel/predicates/kernel.hpp"
+#include "exidel/predicates/types.hpp"
+
+namespace exidel::cli {
+
+enum class Predicate { orient2d, incircle, incircle_cosine };
+
+std::string_view predicate_name(Predicate p) noexcept;
+/// 3 for orient2d, 4 for the in-circle tests.
+int point_count(Predicate p) noexcept;
+
+struct Query {
+    Predicate predicate = Predicate::orient2d;
+    std::array<Point2, 4> points{};  // only the first point_count(predicate) are used
+};
+
+// The coordinate parser lives in lib/io (one implementation for every reader of numbers).
+using io::ParsedNumber;
+using io::parse_double;
+
+/// What one line of input holds.
+struct ParsedLine {
+    enum class Kind { blank, query, error };
+    Kind kind = Kind::blank;
+    Query query;
+    std::string error;  // set iff kind == error; does not include the line number
+};
+
+ParsedLine parse_query_line(std::string_view line);
+
+/// Evaluates a parsed query with kernel `k`.
+template <PredicateKernel K>
+Sign evaluate(const K& k, const Query& q) {
+    const auto& p = q.points;
+    switch (q.predicate) {
+        case Predicate::orient2d: return k.orient2d(p[0], p[1], p[2]);
+        case Predicate::incircle: return k.incircle(p[0], p[1], p[2], p[3]);
+        case Predicate::incircle_cosine: return k.incircle_cosine(p[0], p[1], p[2], p[3]);
+    }
+    return Sign::zero;  // unreachable: every enumerator is handled above
+}
+
+}  // namespace exidel::cli

@@ -1,0 +1,305 @@
+// exidel CLI: `exidel study`, the research instruments of lib/research. Thin: parse the
+// options, call one study, print its table and where the report is.
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "exidel/io/number.hpp"
+#include "exidel/research/studies.hpp"
+
+namespace exidel::cli {
+
+namespace {
+
+constexpr std::string_view study_help =
+    R"(usage: exidel study <study> [--out DIR] [--seed N] [--jobs N] [--quick] [options]
+
+Studies (each writes report.md, CSVs and pictures into DIR and prints its main table):
+  failure-map    one predicate while one point moves over a grid of ulp steps
+                 (Kettner et al. 2008): a PNG per preset and kernel, sign counts
+  precision      wrong-sign rate of MPFR at p bits vs the exact kernel, per
+                 formulation and near-degenerate family; plot + threshold table
+  triangulation  every kernel x in-circle policy x family: certified Delaunay, valid
+                 but not Delaunay, invalid, or failure; minimal failing fixtures
+  stages         which stage of the adaptive kernel decides, on query streams and
+                 inside triangulations
+  all            the four above into DIR/<study>/ and DIR/report.md
+  replay         classify one point file as the triangulation study would:
+                 exidel study replay -i FILE --kernel K [--incircle determinant|cosine]
+
+Common options:
+  --out DIR       output folder (default: exidel-study/<study>, or exidel-study for all)
+  --seed N        every random input is a function of N (default 20250704)
+  --jobs N        threads (default 1); results are identical for every N
+  --quick         the short preset (what `study all --quick` runs)
+  --no-progress   never draw the progress bar (it is drawn on stderr only when stderr
+                  is a terminal and the work takes more than a second)
+
+failure-map:
+  --preset LIST   comma-separated preset names, or 'all' (default: all presets;
+                  --quick: kettner1-3, incircle-s12, cosine-s12); --list-presets
+  --kernel LIST   comma-separated kernels: double|long-double|mpfr:<bits>|adaptive|exact
+                  (default: double,long-double,mpfr:106,adaptive,exact)
+  --width W, --height H   window in cells (default 256 x 256)
+  a custom configuration instead of presets:
+  --predicate P   orient2d|incircle|incircle_cosine
+  --points "x,y;x,y;x,y[;x,y]"   decimal or hex floats
+  --move I        index of the point that moves (default 0)
+  --order LIST    argument order, e.g. 1,2,0 evaluates orient2d(q, r, p): the
+                  floating formulas subtract their first argument (orient2d) or the
+                  fourth (incircle) (default: 0,1,2[,3])
+  --step S        ulps per cell (default 1);  --centered  window around the point
+
+precision:
+  --bits LIST     precisions (default 24..128 every 8, 53, 106, then 160..512)
+  --families LIST family names, 'near' (default) or 'all'
+  --samples N     queries per formulation and family (default 10000; --quick 500)
+
+triangulation:
+  --kernel LIST   (default double,long-double,mpfr:53,mpfr:106,adaptive,exact)
+  --families LIST (default all)   --seeds N point sets per family (default 16; quick 4)
+  --sizes LIST    point counts, cycled over seeds (default 50,100,200,500)
+  --shrink N      fixtures per kernel, policy and outcome (default 2)
+
+stages:
+  --families LIST (default all)  --samples N queries per family and predicate
+                  (default 10000; quick 2000)
+  --seeds N triangulations per family and policy (default 4; quick 2)
+  --size N        points per triangulation (default 1000; quick 200)
+
+Exit status: 0 success, 1 a study failed (I/O), 2 bad options.
+)";
+
+int usage_error(const std::string& message) {
+    std::cerr << "exidel study: " << message << "\n(see exidel study --help)\n";
+    return exit_usage;
+}
+
+std::vector<std::string> split(std::string_view s, char sep) {
+    std::vector<std::string> out;
+    while (!s.empty()) {
+        const std::size_t i = s.find(sep);
+        out.emplace_back(s.substr(0, i));
+        s = i == std::string_view::npos ? std::string_view{} : s.substr(i + 1);
+    }
+    return out;
+}
+
+std::uint64_t parse_unsigned(std::string_view text, std::string_view what, std::uint64_t max) {
+    std::uint64_t v = 0;
+    if (text.empty()) throw std::invalid_argument(std::string(what) + " needs a number");
+    for (char c : text) {
+        if (c < '0' || c > '9' || v > (max - std::uint64_t(c - '0')) / 10) {
+            throw std::invalid_argument(std::string(what) + " must be an integer in [0, " +
+                                        std::to_string(max) + "], got '" + std::string(text) + "'");
+        }
+        v = v * 10 + std::uint64_t(c - '0');
+    }
+    return v;
+}
+
+std::vector<std::size_t> parse_list(std::string_view text, std::string_view what, std::uint64_t max) {
+    std::vector<std::size_t> out;
+    for (const std::string& s : split(text, ',')) out.push_back(parse_unsigned(s, what, max));
+    if (out.empty()) throw std::invalid_argument(std::string(what) + " needs at least one value");
+    return out;
+}
+
+std::vector<Point2> parse_points(std::string_view text) {
+    std::vector<Point2> out;
+    for (const std::string& p : split(text, ';')) {
+        const std::vector<std::string> xy = split(p, ',');
+        if (xy.size() != 2) throw std::invalid_argument("--points: expected x,y pairs separated by ';'");
+        const io::ParsedNumber x = io::parse_double(xy[0]), y = io::parse_double(xy[1]);
+        if (!x.value || !y.value) {
+            throw std::invalid_argument("--points: " + (x.value ? y.error : x.error));
+        }
+        out.push_back({*x.value, *y.value});
+    }
+    return out;
+}
+
+delaunay::InCirclePolicy parse_policy(std::string_view s) {
+    if (s == "determinant") return delaunay::InCirclePolicy::determinant;
+    if (s == "cosine") return delaunay::InCirclePolicy::cosine;
+    throw std::invalid_argument("--incircle must be determinant or cosine");
+}
+
+/// The options of every study, as given (validated by the study itself).
+struct Parsed {
+    std::string study;
+    research::RunOptions run;
+    bool out_given = false;
+    std::optional<std::string> presets, kernels, predicate, points, move, order, families, bits,
+        sizes, input, incircle;
+    std::optional<std::uint64_t> width, height, step, samples, seeds, size, shrink;
+    bool centered = false, list_presets = false;
+};
+
+Parsed parse(std::span<const std::string_view> args) {
+    Parsed p;
+    p.study = std::string(args[0]);
+    for (std::size_t i = 1; i < args.size(); ++i) {
+        const std::string_view a = args[i];
+        const auto value = [&]() -> std::string {
+            if (i + 1 >= args.size()) throw std::invalid_argument(std::string(a) + " needs a value");
+            return std::string(args[++i]);
+        };
+        if (a == "--out" || a == "-o") p.run.out = value(), p.out_given = true;
+        else if (a == "--seed") p.run.seed = parse_unsigned(value(), "--seed", UINT64_MAX);
+        else if (a == "--jobs" || a == "-j") {
+            p.run.jobs = unsigned(parse_unsigned(value(), "--jobs", 256));
+            if (p.run.jobs == 0) throw std::invalid_argument("--jobs must be at least 1");
+        } else if (a == "--quick") p.run.quick = true;
+        else if (a == "--no-progress") p.run.progress = false;
+        else if (a == "--preset") p.presets = value();
+        else if (a == "--kernel" || a == "--kernels" || a == "-k") p.kernels = value();
+        else if (a == "--predicate") p.predicate = value();
+        else if (a == "--points") p.points = value();
+        else if (a == "--move") p.move = value();
+        else if (a == "--order") p.order = value();
+        else if (a == "--families" || a == "--family") p.families = value();
+        else if (a == "--bits") p.bits = value();
+        else if (a == "--sizes") p.sizes = value();
+        else if (a == "-i" || a == "--input") p.input = value();
+        else if (a == "--incircle") p.incircle = value();
+        else if (a == "--width") p.width = parse_unsigned(value(), "--width", 4096);
+        else if (a == "--height") p.height = parse_unsigned(value(), "--height", 4096);
+        else if (a == "--step") p.step = parse_unsigned(value(), "--step", std::uint64_t{1} << 40);
+        else if (a == "--samples") p.samples = parse_unsigned(value(), "--samples", 100'000'000);
+        else if (a == "--seeds") p.seeds = parse_unsigned(value(), "--seeds", 1'000'000);
+        else if (a == "--size") p.size = parse_unsigned(value(), "--size", 1'000'000);
+        else if (a == "--shrink") p.shrink = parse_unsigned(value(), "--shrink", 1000);
+        else if (a == "--centered") p.centered = true;
+        else if (a == "--list-presets") p.list_presets = true;
+        else throw std::invalid_argument("unknown option '" + std::string(a) + "'");
+    }
+    if (!p.out_given) p.run.out = p.study == "all" ? "exidel-study" : "exidel-study/" + p.study;
+    return p;
+}
+
+research::FailureMapOptions failure_map_options(const Parsed& p) {
+    research::FailureMapOptions o;
+    if (p.predicate || p.points) {
+        if (!p.predicate || !p.points) throw std::invalid_argument("a custom map needs --predicate and --points");
+        research::FailureMapSpec s;
+        s.name = "custom";
+        s.formulation = research::formulation_from_name(*p.predicate);
+        s.points = parse_points(*p.points);
+        s.pivot = p.move ? parse_unsigned(*p.move, "--move", 3) : 0;
+        s.order.resize(s.points.size());
+        for (std::size_t i = 0; i < s.order.size(); ++i) s.order[i] = i;
+        if (p.order) s.order = parse_list(*p.order, "--order", 3);
+        if (p.step) s.step = std::int64_t(*p.step);
+        s.centered = p.centered;
+        s.description = "custom " + std::string(research::to_string(s.formulation)) + " map, point " +
+                        std::to_string(s.pivot) + " moved";
+        research::validate(s);  // before any work: bad specs are usage errors
+        o.specs.push_back(std::move(s));
+    } else if (p.presets && *p.presets != "all") {
+        for (const std::string& name : split(*p.presets, ',')) o.specs.push_back(research::failure_map_preset(name));
+    } else if (p.presets) {
+        o.specs = research::failure_map_presets();
+    }
+    if (p.kernels) o.kernels = split(*p.kernels, ',');
+    for (const std::string& k : o.kernels) (void)research::parse_kernel(k);
+    if (p.width) o.width = int(*p.width);
+    if (p.height) o.height = int(*p.height);
+    return o;
+}
+
+void print_result(const research::StudyResult& r, const research::RunOptions& run, double seconds) {
+    std::cout << r.table.text();
+    std::printf("\nreport: %s  (%.1f s)\n", (run.out / "report.md").c_str(), seconds);
+}
+
+}  // namespace
+
+int study_command(std::span<const std::string_view> args) {
+    if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+        (args.empty() ? std::cerr : std::cout) << study_help;
+        return args.empty() ? exit_usage : exit_ok;
+    }
+    Parsed p;
+    try {
+        p = parse(args);
+    } catch (const std::invalid_argument& e) {
+        return usage_error(e.what());
+    }
+    p.run.log = &std::cout;
+    const auto start = std::chrono::steady_clock::now();
+    const auto seconds = [&] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+    using namespace research;
+    try {
+        if (p.study == "failure-map") {
+            if (p.list_presets) {
+                for (const FailureMapSpec& s : failure_map_presets()) std::cout << s.name << "  " << s.description << '\n';
+                return exit_ok;
+            }
+            const FailureMapOptions o = failure_map_options(p);
+            std::cout << "failure-map: seed " << p.run.seed << ", output " << p.run.out.string() << '\n';
+            const FailureMapStudy r = run_failure_map_study(o, p.run);
+            write_text_file(p.run.out / "report.md", r.report.render());
+            print_result(r, p.run, seconds());
+        } else if (p.study == "precision") {
+            PrecisionOptions o;
+            if (p.bits) {
+                for (std::size_t b : parse_list(*p.bits, "--bits", MpfrKernel::max_bits)) o.bits.push_back(unsigned(b));
+            }
+            if (p.families) o.families = parse_families(*p.families);
+            if (p.samples) o.samples = *p.samples;
+            std::cout << "precision: seed " << p.run.seed << ", output " << p.run.out.string() << '\n';
+            const PrecisionStudy r = run_precision_study(o, p.run);
+            write_text_file(p.run.out / "report.md", r.report.render());
+            print_result(r, p.run, seconds());
+        } else if (p.study == "triangulation") {
+            TriangulationOptions o;
+            if (p.kernels) o.kernels = split(*p.kernels, ',');
+            for (const std::string& k : o.kernels) (void)research::parse_kernel(k);
+            if (p.families) o.families = parse_families(*p.families);
+            if (p.seeds) o.seeds = *p.seeds;
+            if (p.sizes) o.sizes = parse_list(*p.sizes, "--sizes", 100000);
+            if (p.shrink) o.shrink_per_class = *p.shrink;
+            std::cout << "triangulation: seed " << p.run.seed << ", output " << p.run.out.string() << '\n';
+            const TriangulationStudy r = run_triangulation_study(o, p.run);
+            write_text_file(p.run.out / "report.md", r.report.render());
+            print_result(r, p.run, seconds());
+        } else if (p.study == "stages") {
+            StagesOptions o;
+            if (p.families) o.families = parse_families(*p.families);
+            if (p.samples) o.samples = *p.samples;
+            if (p.seeds) o.seeds = *p.seeds;
+            if (p.size) o.size = *p.size;
+            std::cout << "stages: seed " << p.run.seed << ", output " << p.run.out.string() << '\n';
+            const StagesStudy r = run_stages_study(o, p.run);
+            write_text_file(p.run.out / "report.md", r.report.render());
+            print_result(r, p.run, seconds());
+        } else if (p.study == "all") {
+            run_all_studies(p.run);
+            std::printf("\nall studies done in %.1f s; report: %s\n", seconds(), (p.run.out / "report.md").c_str());
+        } else if (p.study == "replay") {
+            if (!p.input || !p.kernels) return usage_error("replay needs -i FILE and --kernel K");
+            const Kernel k = research::parse_kernel(*p.kernels);
+            const auto policy = parse_policy(p.incircle.value_or("determinant"));
+            const Classification c = replay_fixture(*p.input, k, policy);
+            std::cout << to_string(c.outcome) << (c.detail.empty() ? "" : " (" + c.detail + ")") << '\n';
+        } else {
+            return usage_error("unknown study '" + p.study + "'");
+        }
+    } catch (const std::invalid_argument& e) {
+        return usage_error(e.what());
+    } catch (const std::exception& e) {
+        std::cerr << "exidel study: " << e.what() << '\n';
+        return exit_failure;
+    }
+    return exit_ok;
+}
+
+}  // namespace exidel::cli

@@ -1,0 +1,348 @@
+// exidel CLI: `exidel triangulate`, points in, Delaunay triangulation out.
+//
+// Data flows one way: read the whole input (lib/io) -> triangulate (lib/delaunay, the one
+// timed call) -> write to a temporary file renamed into place (or stdout). Nothing is
+// written to the output until the triangulation exists, so bad input or a failed run
+// leaves no output file behind.
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+
+#include "commands.hpp"
+#include "exidel/delaunay/triangulate.hpp"
+#include "exidel/io/points.hpp"
+#include "exidel/io/triangulation.hpp"
+
+namespace exidel::cli {
+
+namespace {
+
+constexpr std::string_view triangulate_help =
+    R"(usage: exidel triangulate [-i FILE] [-o FILE] [--kernel NAME]
+                          [--incircle determinant|cosine] [--format json|ele|off|svg]
+                          [--input-format xy|json|node|f64] [--stats]
+
+Computes the Delaunay triangulation of a set of points with the external incremental
+algorithm (Cai 2025): points sorted by x then y, each one added outside the hull of
+the previous ones.
+
+Input (-i FILE, or standard input when no file or '-' is given). The format is
+--input-format, else the file's extension (.json json, .node node, .f64 f64),
+else xy:
+  xy    one point per line, "x y" or "x,y" (.txt .xy .csv); '#' starts a comment;
+        the first line may be a header of two names ("x,y"), which is skipped
+  json  [[x, y], [x, y], ...]
+  node  Triangle's .node: "n 2 attributes markers", then "index x y [...]" lines
+        (0- or 1-based); attributes and markers are checked and ignored
+  f64   raw little-endian float64 pairs x0 y0 x1 y1 ...
+Text coordinates are decimal or C99 hex floats (0x1.8p-3; json: decimal only),
+rounded to the nearest double. NaN and infinity are errors; duplicates are kept
+out of the triangulation and listed. An empty input is 0 points.
+
+Output (-o FILE, or standard output). The format is --format, else the extension of
+-o (.json .ele .off .svg), else json. Indices are 0-based input indices.
+  json  {"triangles": [...], "halfedges": [...], "hull": [...], "duplicates": [...]}
+        delaunator's arrays: triangles counter-clockwise, halfedges -1 on the
+        boundary, hull counter-clockwise from the lexicographically smallest point
+        (all distinct points in order when they are collinear)
+  ele   Triangle's .ele: "ntriangles 3 0", then "t v0 v1 v2", 0-based
+  off   OFF with z = 0 (every input point is a vertex, duplicates included)
+  svg   a picture: triangles, hull in red, points; y up
+
+Options:
+  -i, --input FILE        read points from FILE ('-' for standard input)
+  -o, --output FILE       write the triangulation to FILE ('-' for standard output);
+                          written to a temporary file in the same directory and
+                          renamed on success, so a failed run leaves no FILE
+  -k, --kernel NAME       double|long-double|adaptive|exact|exact-cpp|mpfr:<bits>
+                          (default: adaptive). adaptive, exact and exact-cpp give the
+                          Delaunay triangulation of every finite input; the others may
+                          give a wrong one or fail
+      --incircle POLICY   determinant (default) or cosine (the paper's Section 5 test)
+  -f, --format FORMAT     json|ele|off|svg
+      --input-format FMT  xy|json|node|f64
+      --stats             print one JSON object on standard error: sizes, kernel,
+                          the algorithm's counters and "triangulate_ms" (the time of
+                          the triangulation alone; reading and writing are in
+                          "read_ms" and "write_ms"). Counters are collected only with
+                          --stats (otherwise the run is not instrumented)
+  -h, --help              show this help
+
+Errors: malformed input stops with "exidel: line N: <reason>" (f64: "byte offset N")
+and exit status 1; a triangulation that an inexact kernel made inconsistent stops
+with "exidel: triangulation failed: <reason>" and exit status 1. No output is
+written in either case.
+
+Exit status: 0 success, 1 bad input, failed triangulation or I/O error, 2 bad options.
+)";
+
+int usage_error(const std::string& message) {
+    std::cerr << "exidel triangulate: " << message << "\n\n" << triangulate_help;
+    return exit_usage;
+}
+
+struct Options {
+    std::optional<std::string> input;
+    std::optional<std::string> output;
+    std::string kernel = "adaptive";
+    delaunay::InCirclePolicy incircle = delaunay::InCirclePolicy::determinant;
+    std::optional<io::TriangulationFormat> format;
+    std::optional<io::PointFormat> input_format;
+    bool stats = false;
+};
+
+// Matches args[i] against "SHORT VALUE", "LONG VALUE" or "LONG=VALUE" (short_name may be
+// empty); on a match stores the value and leaves i on the last word consumed. Returns
+// false without a match; sets `missing` when the value is absent.
+bool match_option(std::span<const std::string_view> args, std::size_t& i,
+                  std::string_view short_name, std::string_view long_name, std::string& value,
+                  bool& missing) {
+    const std::string_view arg = args[i];
+    if ((!short_name.empty() && arg == short_name) || arg == long_name) {
+        if (i + 1 == args.size()) {
+            missing = true;
+            return true;
+        }
+        value = std::string(args[++i]);
+        return true;
+    }
+    if (arg.size() > long_name.size() && arg.starts_with(long_name) &&
+        arg[long_name.size()] == '=') {
+        value = std::string(arg.substr(long_name.size() + 1));
+        return true;
+    }
+    return false;
+}
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+std::string_view policy_name(delaunay::InCirclePolicy p) {
+    return p == delaunay::InCirclePolicy::cosine ? "cosine" : "determinant";
+}
+
+void print_stats(std::ostream& err, std::size_t points, const delaunay::Result& r,
+                 const std::string& kernel, const Options& o, double read_ms,
+                 double triangulate_ms, double write_ms) {
+    const delaunay::Triangulation& t = r.triangulation;
+    const delaunay::Counters& c = r.counters;
+    std::ostringstream s;
+    s.precision(6);
+    s << std::fixed;
+    s << "{\"points\": " << points << ", \"vertices\": " << points - t.duplicates.size()
+      << ", \"duplicates\": " << t.duplicates.size() << ", \"triangles\": " << t.triangle_count()
+      << ", \"hull_size\": " << t.hull.size()
+      << ", \"collinear\": " << (t.collinear ? "true" : "false") << ", \"kernel\": \"" << kernel
+      << "\", \"incircle\": \"" << policy_name(o.incircle)
+      << "\", \"instrumentation\": \"counters\", \"counters\": {"
+      << "\"seed_orientations\": " << c.seed_orientations
+      << ", \"tangent_orientations\": " << c.tangent_orientations
+      << ", \"incircle_tests\": " << c.incircle_tests << ", \"eroded_edges\": " << c.eroded_edges
+      << ", \"triangles_created\": " << c.triangles_created
+      << ", \"triangles_destroyed\": " << c.triangles_destroyed
+      << ", \"theorem1_checks\": " << c.theorem1_checks
+      << ", \"theorem1_violations\": " << c.theorem1_violations << "}"
+      << ", \"read_ms\": " << read_ms << ", \"triangulate_ms\": " << triangulate_ms
+      << ", \"write_ms\": " << write_ms << "}\n";
+    err << s.str();
+}
+
+// Removes the temporary file unless it was renamed into place.
+struct TempFile {
+    std::string path;
+    bool keep = false;
+    ~TempFile() {
+        if (!path.empty() && !keep) std::remove(path.c_str());
+    }
+};
+
+// Writes through `write` into a new file next to `path` and renames it over `path` when
+// everything succeeded. On failure returns false with `error` set and leaves `path`
+// untouched (the previous file, if any, survives).
+template <class Write>
+bool write_atomically(const std::string& path, Write write, std::string& error) {
+    TempFile tmp{path + ".tmp.XXXXXX"};
+    const int fd = ::mkstemp(tmp.path.data());
+    if (fd < 0) {
+        tmp.path.clear();
+        error = "cannot create a temporary file next to '" + path + "'";
+        return false;
+    }
+    // mkstemp creates the file 0600; give the result the permissions a plain open would.
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    ::fchmod(fd, 0666 & ~mask);
+    ::close(fd);
+    {
+        std::ofstream out(tmp.path, std::ios::binary | std::ios::trunc);
+        if (out) write(out);
+        out.close();
+        if (!out) {
+            error = "error while writing '" + path + "'";
+            return false;
+        }
+    }
+    if (std::rename(tmp.path.c_str(), path.c_str()) != 0) {
+        error = "cannot rename the temporary file to '" + path + "'";
+        return false;
+    }
+    tmp.keep = true;
+    return true;
+}
+
+int run(const Options& o) {
+    std::string error;
+    const std::optional<AnyKernel> kernel = parse_kernel(o.kernel, error);
+    if (!kernel) return usage_error(error);
+    const bool from_stdin = !o.input || *o.input == "-";
+    const bool to_stdout = !o.output || *o.output == "-";
+    const io::PointFormat input_format =
+        o.input_format ? *o.input_format
+                       : (from_stdin ? io::PointFormat::xy : io::point_format_from_path(*o.input));
+    const io::TriangulationFormat format =
+        o.format ? *o.format
+                 : (to_stdout ? io::TriangulationFormat::json
+                              : io::triangulation_format_from_path(*o.output)
+                                    .value_or(io::TriangulationFormat::json));
+
+    // Read.
+    const Clock::time_point read_start = Clock::now();
+    std::vector<Point2> points;
+    try {
+        if (from_stdin) {
+            points = io::read_points(std::cin, input_format);
+        } else {
+            std::ifstream file(*o.input, std::ios::binary);
+            if (!file) {
+                std::cerr << "exidel: cannot open '" << *o.input << "'\n";
+                return exit_failure;
+            }
+            points = io::read_points(file, input_format);
+        }
+    } catch (const io::ReadError& e) {
+        std::cerr << "exidel: " << e.what() << '\n';
+        return exit_failure;
+    } catch (const std::runtime_error& e) {
+        std::cerr << "exidel: " << e.what() << '\n';
+        return exit_failure;
+    }
+    const double read_ms = ms_since(read_start);
+
+    // Triangulate: the only timed step. Counters only when asked for, so a plain run is
+    // the uninstrumented algorithm.
+    const delaunay::Options options{o.incircle};
+    delaunay::Result result;
+    std::string kernel_name;
+    double triangulate_ms = 0;
+    std::visit(
+        [&](const auto& k) {
+            kernel_name = k.name();
+            const Clock::time_point start = Clock::now();
+            if (o.stats) {
+                result = delaunay::triangulate<delaunay::Instrumentation::counters>(
+                    std::span<const Point2>(points), k, options);
+            } else {
+                result = delaunay::triangulate<delaunay::Instrumentation::off>(
+                    std::span<const Point2>(points), k, options);
+            }
+            triangulate_ms = ms_since(start);
+        },
+        *kernel);
+    if (!result.ok()) {
+        std::cerr << "exidel: triangulation failed: " << result.failure->message << " ("
+                  << delaunay::to_string(result.failure->kind) << ")\n";
+        return exit_failure;
+    }
+
+    // Write.
+    const Clock::time_point write_start = Clock::now();
+    const auto write = [&](std::ostream& out) {
+        io::write_triangulation(out, points, result.triangulation, format);
+    };
+    if (to_stdout) {
+        write(std::cout);
+        std::cout.flush();
+        if (!std::cout) {
+            std::cerr << "exidel: error while writing the output\n";
+            return exit_failure;
+        }
+    } else if (!write_atomically(*o.output, write, error)) {
+        std::cerr << "exidel: " << error << '\n';
+        return exit_failure;
+    }
+    if (o.stats) {
+        print_stats(std::cerr, points.size(), result, kernel_name, o, read_ms, triangulate_ms,
+                    ms_since(write_start));
+    }
+    return exit_ok;
+}
+
+}  // namespace
+
+int triangulate_command(std::span<const std::string_view> args) {
+    Options o;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string_view arg = args[i];
+        if (arg == "-h" || arg == "--help") {
+            std::cout << triangulate_help;
+            return exit_ok;
+        }
+        if (arg == "--stats") {
+            o.stats = true;
+            continue;
+        }
+        std::string value;
+        bool missing = false;
+        const auto option = [&](std::string_view short_name, std::string_view long_name) {
+            return match_option(args, i, short_name, long_name, value, missing);
+        };
+        if (option("-i", "--input")) {
+            if (!missing && o.input) return usage_error("more than one input file given");
+            o.input = value;
+        } else if (option("-o", "--output")) {
+            if (!missing && o.output) return usage_error("more than one output file given");
+            o.output = value;
+        } else if (option("-k", "--kernel")) {
+            o.kernel = value;
+        } else if (option("", "--incircle")) {
+            if (value == "determinant") {
+                o.incircle = delaunay::InCirclePolicy::determinant;
+            } else if (value == "cosine") {
+                o.incircle = delaunay::InCirclePolicy::cosine;
+            } else if (!missing) {
+                return usage_error("--incircle takes determinant or cosine, got '" + value + "'");
+            }
+        } else if (option("-f", "--format")) {
+            o.format = io::triangulation_format_from_name(value);
+            if (!o.format && !missing) {
+                return usage_error("--format takes json, ele, off or svg, got '" + value + "'");
+            }
+        } else if (option("", "--input-format")) {
+            o.input_format = io::point_format_from_name(value);
+            if (!o.input_format && !missing) {
+                return usage_error("--input-format takes xy, json, node or f64, got '" + value +
+                                   "'");
+            }
+        } else if (arg.starts_with("-") && arg != "-") {
+            return usage_error("unknown option '" + std::string(arg) + "'");
+        } else {
+            if (o.input) return usage_error("more than one input file given");
+            o.input = std::string(arg);  // the positional FILE
+        }
+        if (missing) return usage_error(std::string(arg) + " needs a value");
+    }
+    return run(o);
+}
+
+}  // namespace exidel::cli

@@ -1,0 +1,131 @@
+// exidel: the result types of the triangulation, the hull algorithm and the certifier.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "exidel/predicates/types.hpp"
+
+namespace exidel::delaunay {
+
+/// How the erosion step decides "the new point is strictly inside the circumcircle of
+/// the triangle behind this border edge".
+enum class InCirclePolicy {
+    determinant,  ///< k.incircle(a, b, c, p) with abc the CCW triangle.
+    cosine,       ///< the paper's Section 5 test, k.incircle_cosine(a, b, c, p).
+};
+
+struct Options {
+    InCirclePolicy incircle = InCirclePolicy::determinant;
+};
+
+/// What a run records. `off` compiles every counter away.
+enum class Instrumentation {
+    off,
+    counters,  ///< count predicate calls, flips, triangles created and destroyed
+    theorem1,  ///< counters, and check the paper's Theorem 1 exactly at every in-circle test
+};
+
+struct Counters {
+    std::uint64_t seed_orientations = 0;     ///< orient2d calls looking for the seed
+    std::uint64_t tangent_orientations = 0;  ///< orient2d calls in the tangent walks
+    std::uint64_t incircle_tests = 0;
+    std::uint64_t eroded_edges = 0;  ///< = edge flips of the incremental view
+    std::uint64_t triangles_created = 0;
+    std::uint64_t triangles_destroyed = 0;
+    /// Theorem 1: at each in-circle test of border edge ab with opposite vertex c, the
+    /// new point p and c are strictly on opposite sides of ab (exact orientation).
+    std::uint64_t theorem1_checks = 0;
+    std::uint64_t theorem1_violations = 0;
+};
+
+/// Why a run stopped. Everything but non_finite_input and too_many_points means the
+/// kernel's answers were geometrically inconsistent (only possible with an inexact
+/// kernel); the structure is then abandoned instead of being walked further.
+enum class FailureKind {
+    non_finite_input,      ///< a NaN or infinite coordinate
+    too_many_points,       ///< more points than 32-bit half-edge indices can address
+    no_visible_edge,       ///< the new point saw no hull edge from the last point
+    hull_walk_exceeded,    ///< a tangent walk went all the way round the hull
+    erosion_inconsistent,  ///< the erosion reached an edge that is not on the border
+    erosion_exceeded,      ///< the erosion destroyed more triangles than exist
+};
+
+std::string_view to_string(FailureKind kind) noexcept;
+
+inline constexpr std::size_t no_index = std::numeric_limits<std::size_t>::max();
+
+struct Failure {
+    FailureKind kind;
+    std::size_t input_index = no_index;  ///< the offending / inserted input point
+    std::size_t insertion = no_index;    ///< its position in sorted order (the insertion step)
+    std::string message;                 ///< where it happened, in words
+};
+
+/// A triangulation in compact index arrays (the layout of delaunator).
+///
+///   triangles[3t], [3t+1], [3t+2]  the vertices of triangle t, counter-clockwise, as
+///                                  input indices (of the first occurrence of a point).
+///   halfedges[e]                   the twin of half-edge e, -1 on the boundary. Half-edge
+///                                  e runs from triangles[e] to triangles[next(e)], with
+///                                  next(e) = e % 3 == 2 ? e - 2 : e + 1.
+///   hull                           the boundary as a counter-clockwise cycle starting at
+///                                  the lexicographically smallest point; collinear
+///                                  boundary points are vertices. When `collinear` is set
+///                                  there are no triangles and `hull` is the chain of all
+///                                  distinct points in lexicographic order.
+///
+/// Correspondence with the paper (Section 3): its hull list L_ch is `hull`; its
+/// dictionary D_tri maps an edge (i1, i2) to the one or two opposite vertices; here the
+/// edge is a half-edge e with i1 = triangles[e], i2 = triangles[next(e)], its opposite
+/// vertex is triangles[prev(e)], and the second entry of D_tri is the opposite vertex
+/// of halfedges[e] (none when it is -1, the boundary edges of D_tri with one entry).
+struct Triangulation {
+    std::vector<std::uint32_t> triangles;
+    std::vector<std::int32_t> halfedges;
+    std::vector<std::uint32_t> hull;
+    /// For every input index i, the input index of the first occurrence of points[i].
+    std::vector<std::uint32_t> vertex_of_input;
+    /// Input indices that repeat an earlier point exactly (increasing).
+    std::vector<std::uint32_t> duplicates;
+    bool collinear = false;  ///< fewer than three distinct points, or all on one line
+
+    std::size_t triangle_count() const noexcept { return triangles.size() / 3; }
+};
+
+constexpr std::size_t next_halfedge(std::size_t e) noexcept { return e % 3 == 2 ? e - 2 : e + 1; }
+constexpr std::size_t prev_halfedge(std::size_t e) noexcept { return e % 3 == 0 ? e + 2 : e - 1; }
+
+struct Result {
+    Triangulation triangulation;  ///< meaningful only when ok()
+    Counters counters;            ///< zero unless instrumented
+    std::optional<Failure> failure;
+    bool ok() const noexcept { return !failure.has_value(); }
+};
+
+namespace detail {
+
+/// Points sorted lexicographically (x, then y) with exact duplicates removed.
+struct SortedInput {
+    std::vector<Point2> points;              ///< distinct, increasing
+    std::vector<std::uint32_t> input_of;     ///< sorted position -> input index (first occurrence)
+    std::vector<std::uint32_t> vertex_of_input;
+    std::vector<std::uint32_t> duplicates;
+};
+
+/// Largest input size: 6n half-edges must fit in std::int32_t.
+inline constexpr std::size_t max_points = 350'000'000;
+
+/// Rejects non-finite coordinates (naming the first bad index) and oversized input
+/// before any other work, then sorts and removes duplicates.
+std::optional<Failure> sort_and_dedupe(std::span<const Point2> input, SortedInput& out);
+
+}  // namespace detail
+
+}  // namespace exidel::delaunay

@@ -1,0 +1,327 @@
+// exidel I/O: the point readers and writers (formats: exidel/io/points.hpp).
+#include "exidel/io/points.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <istream>
+#include <ostream>
+
+#include "exidel/io/number.hpp"
+#include "json.hpp"
+#include "text.hpp"
+
+namespace exidel::io {
+
+namespace {
+
+using detail::for_each_line;
+using detail::is_blank;
+using detail::strip_comment;
+
+// Splits a comment-free line into fields separated by blanks and/or one comma. An empty
+// field ("1,,2", ",1", "1,") is an error: returns false and sets `error`.
+bool split_fields(std::string_view line, std::vector<std::string_view>& fields, std::string& error,
+                  bool commas) {
+    fields.clear();
+    std::size_t i = 0;
+    const std::size_t n = line.size();
+    const auto skip = [&] {
+        while (i < n && is_blank(line[i])) ++i;
+    };
+    skip();
+    if (i == n) return true;
+    for (;;) {
+        if (i == n || (commas && line[i] == ',')) {
+            error = "empty field (two separators in a row, or a comma at the start or end)";
+            return false;
+        }
+        const std::size_t start = i;
+        while (i < n && !is_blank(line[i]) && !(commas && line[i] == ',')) ++i;
+        fields.push_back(line.substr(start, i - start));
+        skip();
+        if (i == n) return true;
+        if (commas && line[i] == ',') {
+            ++i;
+            skip();
+        }
+    }
+}
+
+bool starts_with_ci(std::string_view s, std::string_view prefix) {
+    return s.size() >= prefix.size() &&
+           std::equal(prefix.begin(), prefix.end(), s.begin(), [](char p, char c) {
+               return p == std::tolower(static_cast<unsigned char>(c));
+           });
+}
+
+// A header field: starts with a letter and is not a spelling of nan or inf (which must
+// be reported as a non-finite coordinate, not skipped).
+bool is_name(std::string_view f) {
+    return !f.empty() && std::isalpha(static_cast<unsigned char>(f.front())) &&
+           !starts_with_ci(f, "nan") && !starts_with_ci(f, "inf");
+}
+
+double coordinate(std::size_t line, std::string_view field, const char* what) {
+    const ParsedNumber n = parse_double(field);
+    if (!n.value) throw ReadError::at_line(line, std::string(what) + ": " + n.error);
+    return *n.value;
+}
+
+std::vector<Point2> parse_xy(std::string_view data) {
+    std::vector<Point2> points;
+    std::vector<std::string_view> fields;
+    std::string error;
+    bool first_content = true;
+    for_each_line(data, [&](std::size_t number, std::string_view line) {
+        if (!split_fields(strip_comment(line), fields, error, true)) {
+            throw ReadError::at_line(number, error);
+        }
+        if (fields.empty()) return;
+        const bool header = first_content && fields.size() == 2 && is_name(fields[0]) &&
+                            is_name(fields[1]);
+        first_content = false;
+        if (header) return;
+        if (fields.size() != 2) {
+            throw ReadError::at_line(number, "expected 2 coordinates (x y), got " +
+                                                 std::to_string(fields.size()));
+        }
+        points.push_back({coordinate(number, fields[0], "x"), coordinate(number, fields[1], "y")});
+    });
+    return points;
+}
+
+std::vector<Point2> parse_json(std::string_view data) {
+    detail::JsonCursor j(data);
+    std::vector<Point2> points;
+    if (j.at_end()) return points;
+    j.expect('[', "to open the array of points");
+    if (!j.accept(']')) {
+        do {
+            j.expect('[', "to open a point [x, y]");
+            const double x = j.number("x");
+            if (j.peek() == ']') j.fail("a point is [x, y]: y is missing");
+            j.expect(',', "between x and y");
+            const double y = j.number("y");
+            if (j.peek() == ',') j.fail("a point is [x, y]: found a third coordinate");
+            j.expect(']', "to close the point");
+            points.push_back({x, y});
+        } while (j.accept(','));
+        j.expect(']', "or ',' after a point");
+    }
+    if (!j.at_end()) j.fail("unexpected " + j.found() + " after the closing ']'");
+    return points;
+}
+
+// A whole-field integer in [lo, hi].
+long long node_integer(std::size_t line, std::string_view field, const std::string& what,
+                       long long lo, long long hi) {
+    long long v = 0;
+    const auto r = std::from_chars(field.data(), field.data() + field.size(), v);
+    if (r.ec != std::errc{} || r.ptr != field.data() + field.size()) {
+        throw ReadError::at_line(line, what + ": " + quoted(field) + " is not an integer");
+    }
+    if (v < lo || v > hi) {
+        throw ReadError::at_line(line, what + " " + std::to_string(v) +
+                                           (lo == hi ? ", expected " + std::to_string(lo)
+                                                     : " is outside [" + std::to_string(lo) +
+                                                           ", " + std::to_string(hi) + "]"));
+    }
+    return v;
+}
+
+std::vector<Point2> parse_node(std::string_view data) {
+    std::vector<Point2> points;
+    std::vector<std::string_view> fields;
+    std::string error;
+    bool have_header = false;
+    long long expected = 0, attributes = 0, markers = 0, first_index = 0;
+    constexpr long long max_count = 0x7fffffff;
+    const std::size_t lines = for_each_line(data, [&](std::size_t number, std::string_view line) {
+        split_fields(strip_comment(line), fields, error, false);  // no commas: cannot fail
+        if (fields.empty()) return;
+        if (!have_header) {
+            if (fields.size() > 4) {
+                throw ReadError::at_line(number, "the header is \"vertices [dimension "
+                                                 "[attributes [markers]]]\", got " +
+                                                     std::to_string(fields.size()) + " fields");
+            }
+            expected = node_integer(number, fields[0], "number of vertices", 0, max_count);
+            if (fields.size() > 1) node_integer(number, fields[1], "dimension", 2, 2);
+            if (fields.size() > 2) {
+                attributes = node_integer(number, fields[2], "number of attributes", 0, 1 << 20);
+            }
+            if (fields.size() > 3) markers = node_integer(number, fields[3], "markers", 0, 1);
+            have_header = true;
+            // The header's count is not trusted for memory: at most one point per 4 bytes.
+            points.reserve(static_cast<std::size_t>(
+                std::min<long long>(expected, static_cast<long long>(data.size() / 4))));
+            return;
+        }
+        const auto k = static_cast<long long>(points.size());
+        if (k == expected) {
+            throw ReadError::at_line(number, "more vertex lines than the " +
+                                                 std::to_string(expected) +
+                                                 " the header announces");
+        }
+        const auto want = static_cast<std::size_t>(3 + attributes + markers);
+        if (fields.size() != want) {
+            throw ReadError::at_line(
+                number, "expected " + std::to_string(want) + " fields (index x y" +
+                            (attributes ? " + " + std::to_string(attributes) + " attributes" : "") +
+                            (markers ? " + marker" : "") + "), got " +
+                            std::to_string(fields.size()));
+        }
+        if (k == 0) {
+            first_index = node_integer(number, fields[0], "first vertex index", 0, 1);
+        } else {
+            node_integer(number, fields[0], "vertex index", first_index + k, first_index + k);
+        }
+        points.push_back({coordinate(number, fields[1], "x"), coordinate(number, fields[2], "y")});
+        for (std::size_t a = 0; a < static_cast<std::size_t>(attributes); ++a) {
+            coordinate(number, fields[3 + a], "attribute");
+        }
+        if (markers) {
+            node_integer(number, fields.back(), "boundary marker", INT32_MIN, INT32_MAX);
+        }
+    });
+    if (have_header && static_cast<long long>(points.size()) != expected) {
+        throw ReadError::at_line(std::max<std::size_t>(lines, 1),
+                                 "truncated: the file ends after " +
+                                     std::to_string(points.size()) + " of the " +
+                                     std::to_string(expected) + " vertices the header announces");
+    }
+    return points;
+}
+
+std::uint64_t little_endian(std::uint64_t v) {
+    if constexpr (std::endian::native == std::endian::big) {
+        std::uint64_t r = 0;
+        for (int b = 0; b < 8; ++b) r |= ((v >> (8 * b)) & 0xffu) << (8 * (7 - b));
+        return r;
+    }
+    return v;
+}
+
+std::vector<Point2> parse_f64(std::string_view data) {
+    if (data.size() % 16 != 0) {
+        throw ReadError::at_byte(data.size() - data.size() % 16,
+                                 "truncated: " + std::to_string(data.size()) +
+                                     " bytes is not a multiple of 16 (one x y pair of float64); " +
+                                     std::to_string(data.size() % 16) + " bytes left over");
+    }
+    std::vector<Point2> points(data.size() / 16);
+    for (std::size_t offset = 0; offset < data.size(); offset += 8) {
+        std::uint64_t bits = 0;
+        std::memcpy(&bits, data.data() + offset, 8);
+        const double v = std::bit_cast<double>(little_endian(bits));
+        if (!std::isfinite(v)) {
+            throw ReadError::at_byte(offset, std::string(offset % 16 ? "y" : "x") +
+                                                 " of point " + std::to_string(offset / 16) +
+                                                 " is " + (std::isnan(v) ? "NaN" : "infinite"));
+        }
+        Point2& p = points[offset / 16];
+        (offset % 16 ? p.y : p.x) = v;
+    }
+    return points;
+}
+
+void require_finite(std::span<const Point2> points) {
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        if (!std::isfinite(points[i].x) || !std::isfinite(points[i].y)) {
+            throw std::invalid_argument("write_points: point " + std::to_string(i) +
+                                        " is not finite");
+        }
+    }
+}
+
+}  // namespace
+
+ReadError ReadError::at_line(std::size_t line, const std::string& reason) {
+    return ReadError("line " + std::to_string(line) + ": " + reason, line, 0, reason);
+}
+
+ReadError ReadError::at_byte(std::size_t offset, const std::string& reason) {
+    return ReadError("byte offset " + std::to_string(offset) + ": " + reason, 0, offset, reason);
+}
+
+std::string_view to_string(PointFormat f) noexcept {
+    switch (f) {
+        case PointFormat::xy: return "xy";
+        case PointFormat::json: return "json";
+        case PointFormat::node: return "node";
+        case PointFormat::f64: return "f64";
+    }
+    return "?";
+}
+
+std::optional<PointFormat> point_format_from_name(std::string_view name) {
+    for (PointFormat f : {PointFormat::xy, PointFormat::json, PointFormat::node, PointFormat::f64}) {
+        if (to_string(f) == name) return f;
+    }
+    return std::nullopt;
+}
+
+PointFormat point_format_from_path(std::string_view path) {
+    if (path.ends_with(".json")) return PointFormat::json;
+    if (path.ends_with(".node")) return PointFormat::node;
+    if (path.ends_with(".f64")) return PointFormat::f64;
+    return PointFormat::xy;  // .txt, .xy, .csv and anything else
+}
+
+std::vector<Point2> parse_points(std::string_view data, PointFormat format) {
+    switch (format) {
+        case PointFormat::xy: return parse_xy(data);
+        case PointFormat::json: return parse_json(data);
+        case PointFormat::node: return parse_node(data);
+        case PointFormat::f64: return parse_f64(data);
+    }
+    return {};
+}
+
+std::vector<Point2> read_points(std::istream& in, PointFormat format) {
+    std::string data;
+    char chunk[1 << 16];
+    while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
+        data.append(chunk, static_cast<std::size_t>(in.gcount()));
+    }
+    if (in.bad()) throw std::runtime_error("error while reading the input");
+    return parse_points(data, format);
+}
+
+void write_points(std::ostream& out, std::span<const Point2> points, PointFormat format) {
+    if (format == PointFormat::f64) {
+        for (const Point2& p : points) {
+            for (double v : {p.x, p.y}) {
+                const std::uint64_t bits = little_endian(std::bit_cast<std::uint64_t>(v));
+                char bytes[8];
+                std::memcpy(bytes, &bits, 8);
+                out.write(bytes, 8);
+            }
+        }
+        return;
+    }
+    require_finite(points);
+    detail::NumberWriter w(out);
+    if (format == PointFormat::json) {
+        w.text("[");
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            w.text(i ? ",\n [" : "[").number(points[i].x).text(", ").number(points[i].y).text("]");
+        }
+        w.text("]\n");
+        return;
+    }
+    if (format == PointFormat::node) {
+        w.number(static_cast<std::uint64_t>(points.size())).text(" 2 0 0\n");
+    }
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        if (format == PointFormat::node) w.number(static_cast<std::uint64_t>(i)).text(" ");
+        w.number(points[i].x).text(" ").number(points[i].y).text("\n");
+    }
+}
+
+}  // namespace exidel::io

@@ -1,0 +1,88 @@
+// exidel I/O (internal): small pieces shared by the readers and writers.
+#pragma once
+
+#include <charconv>
+#include <cstdint>
+#include <ostream>
+#include <string_view>
+
+namespace exidel::io::detail {
+
+inline constexpr std::string_view blanks = " \t\r\v\f";
+
+inline bool is_blank(char c) { return blanks.find(c) != std::string_view::npos; }
+
+/// Calls f(line_number, line) for every line of `data` (split at '\n', a trailing '\r'
+/// removed, line numbers from 1). A final line without '\n' counts; an empty tail does not.
+/// Returns the number of lines.
+template <class F>
+std::size_t for_each_line(std::string_view data, F&& f) {
+    std::size_t number = 0;
+    std::size_t start = 0;
+    while (start < data.size()) {
+        std::size_t end = data.find('\n', start);
+        if (end == std::string_view::npos) end = data.size();
+        std::string_view line = data.substr(start, end - start);
+        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+        f(++number, line);
+        start = end + 1;
+    }
+    return number;
+}
+
+/// `line` without its '#' comment.
+inline std::string_view strip_comment(std::string_view line) {
+    const std::size_t hash = line.find('#');
+    return hash == std::string_view::npos ? line : line.substr(0, hash);
+}
+
+/// Buffered text output of numbers: std::to_chars into a local buffer, flushed in large
+/// writes (an ostream<< per number costs several times more at 10^6 points).
+class NumberWriter {
+public:
+    explicit NumberWriter(std::ostream& out) : out_(out) {}
+    ~NumberWriter() { flush(); }
+    NumberWriter(const NumberWriter&) = delete;
+    NumberWriter& operator=(const NumberWriter&) = delete;
+
+    NumberWriter& text(std::string_view s) {
+        if (s.size() > capacity - used_) flush();
+        if (s.size() > capacity) {
+            out_.write(s.data(), static_cast<std::streamsize>(s.size()));
+            return *this;
+        }
+        for (char c : s) buf_[used_++] = c;
+        return *this;
+    }
+    /// The shortest decimal that reads back as exactly `v` (std::to_chars).
+    NumberWriter& number(double v) { return put(v); }
+    NumberWriter& number(std::int64_t v) { return put(v); }
+    NumberWriter& number(std::uint64_t v) { return put(v); }
+    /// `v` with `digits` digits after the point (for pictures, not for reading back).
+    NumberWriter& fixed(double v, int digits) {
+        if (capacity - used_ < 400) flush();  // room for any fixed-format double
+        const auto r = std::to_chars(buf_ + used_, buf_ + capacity, v, std::chars_format::fixed,
+                                     digits);
+        used_ = static_cast<std::size_t>(r.ptr - buf_);
+        return *this;
+    }
+    void flush() {
+        out_.write(buf_, static_cast<std::streamsize>(used_));
+        used_ = 0;
+    }
+
+private:
+    template <class T>
+    NumberWriter& put(T v) {
+        if (capacity - used_ < 32) flush();
+        const auto r = std::to_chars(buf_ + used_, buf_ + capacity, v);
+        used_ = static_cast<std::size_t>(r.ptr - buf_);
+        return *this;
+    }
+    static constexpr std::size_t capacity = 1 << 16;
+    std::ostream& out_;
+    char buf_[capacity];
+    std::size_t used_ = 0;
+};
+
+}  // namespace exidel::io::detail

@@ -1,0 +1,212 @@
+// exidel::research: what every study shares. The kernels a study can run, the three
+// formulations, reproducible seeds, deterministic work splitting over threads, the
+// progress bar, and the tables and reports a study writes.
+//
+// Determinism: a study splits its work into a fixed list of chunks whose contents and
+// seeds depend only on the study's options and --seed, never on --jobs; threads take
+// chunks in any order and write each result into the chunk's own slot, and the results
+// are combined in chunk order. The same seed therefore gives byte-identical output files
+// for every --jobs.
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <exception>
+#include <filesystem>
+#include <iosfwd>
+#include <mutex>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <thread>
+#include <variant>
+#include <vector>
+
+#include "exidel/predicates/all.hpp"
+
+namespace exidel::research {
+
+// ---------------------------------------------------------------------------------
+// Kernels and formulations.
+
+/// The kernels a study can evaluate. GmpExactKernel is the reference of every study.
+using Kernel = std::variant<DoubleKernel, LongDoubleKernel, MpfrKernel, AdaptiveKernel,
+                            GmpExactKernel>;
+
+inline constexpr std::string_view kernel_spellings = "double|long-double|mpfr:<bits>|adaptive|exact";
+
+/// "double", "long-double", "mpfr:<bits>", "adaptive", "exact". Throws
+/// std::invalid_argument with a readable message for anything else.
+Kernel parse_kernel(std::string_view name);
+/// The spelling parse_kernel accepts for `k` (so names round-trip on the command line).
+std::string kernel_name(const Kernel& k);
+/// kernel_name with characters unsafe in file names replaced ("mpfr:64" -> "mpfr64").
+std::string kernel_file_name(const Kernel& k);
+
+enum class Formulation { orient2d, incircle, incircle_cosine };
+inline constexpr Formulation all_formulations[] = {Formulation::orient2d, Formulation::incircle,
+                                                   Formulation::incircle_cosine};
+std::string_view to_string(Formulation f) noexcept;
+/// Throws std::invalid_argument for anything but the three names.
+Formulation formulation_from_name(std::string_view name);
+constexpr std::size_t arity(Formulation f) noexcept { return f == Formulation::orient2d ? 3 : 4; }
+
+/// The formulation's predicate on args (arity(f) points, in argument order).
+template <PredicateKernel K>
+Sign evaluate(const K& k, Formulation f, std::span<const Point2> args) {
+    switch (f) {
+        case Formulation::orient2d: return k.orient2d(args[0], args[1], args[2]);
+        case Formulation::incircle: return k.incircle(args[0], args[1], args[2], args[3]);
+        case Formulation::incircle_cosine:
+            return k.incircle_cosine(args[0], args[1], args[2], args[3]);
+    }
+    return Sign::zero;
+}
+
+// ---------------------------------------------------------------------------------
+// Seeds.
+
+/// A 64-bit seed derived from `seed` and a path of integers (study, family, chunk, ...)
+/// with SplitMix64 steps: distinct paths give unrelated streams.
+std::uint64_t derive_seed(std::uint64_t seed, std::initializer_list<std::uint64_t> path);
+
+/// RapidCheck keeps the generation context of rc::gen::exec in process-wide stacks, so
+/// generators must never run on two threads at once. Chunks hold this lock while they
+/// draw their inputs (from their own seed, so the order of drawing does not matter) and
+/// release it for the evaluation.
+std::mutex& rapidcheck_mutex();
+
+// ---------------------------------------------------------------------------------
+// Options every study accepts.
+
+struct RunOptions {
+    std::uint64_t seed = 20250704;  ///< printed in every report; the run is a function of it
+    std::filesystem::path out = "exidel-study";
+    unsigned jobs = 1;          ///< threads; results do not depend on it
+    bool quick = false;         ///< the short preset (study all --quick, the tests)
+    bool progress = true;       ///< allow the progress bar (still only on a terminal)
+    std::ostream* log = nullptr;  ///< summary lines (stdout in the CLI); null: silent
+};
+
+// ---------------------------------------------------------------------------------
+// Progress bar.
+
+/// A one-line progress bar on stderr. Drawn only when stderr is a terminal, progress is
+/// allowed, and the work has already taken a second (short runs stay silent). advance()
+/// is thread-safe and cheap: redraws are limited to ten per second.
+class Progress {
+public:
+    Progress(std::string label, std::size_t total, bool allowed);
+    ~Progress();
+    Progress(const Progress&) = delete;
+    Progress& operator=(const Progress&) = delete;
+
+    void advance(std::size_t n = 1);
+
+private:
+    void draw(std::size_t done);
+
+    std::string label_;
+    std::size_t total_;
+    bool enabled_;
+    std::chrono::steady_clock::time_point start_;
+    std::atomic<std::size_t> done_{0};
+    std::atomic<std::int64_t> last_draw_ms_{-1};
+    std::mutex draw_mutex_;
+    bool drawn_ = false;
+};
+
+/// Runs body(i) for every chunk i in [0, chunks) on `jobs` threads (jobs >= 1; the
+/// calling thread is one of them). body must only write to chunk i's own result slot.
+/// Advances `progress` by one per finished chunk. The first exception thrown by any
+/// body is rethrown here after every thread has stopped.
+template <class Body>
+void for_each_chunk(std::size_t chunks, unsigned jobs, Progress* progress, Body&& body) {
+    std::atomic<std::size_t> next{0};
+    std::exception_ptr error;
+    std::mutex error_mutex;
+    auto worker = [&] {
+        for (;;) {
+            const std::size_t i = next.fetch_add(1);
+            if (i >= chunks) return;
+            try {
+                body(i);
+            } catch (...) {
+                const std::lock_guard lock(error_mutex);
+                if (!error) error = std::current_exception();
+                next.store(chunks);  // stop handing out work
+                return;
+            }
+            if (progress) progress->advance();
+        }
+    };
+    const std::size_t threads = std::min<std::size_t>(jobs < 1 ? 1 : jobs, chunks);
+    std::vector<std::thread> pool;
+    for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(worker);
+    worker();
+    for (std::thread& t : pool) t.join();
+    if (error) std::rethrow_exception(error);
+}
+
+// ---------------------------------------------------------------------------------
+// Tables and reports.
+
+struct Table {
+    std::vector<std::string> header;
+    std::vector<std::vector<std::string>> rows;
+
+    std::string markdown() const;
+    std::string csv() const;   ///< RFC 4180 quoting where a cell needs it
+    std::string text() const;  ///< aligned columns for a terminal
+};
+
+/// A report.md under construction: headings, paragraphs, tables, images, code blocks.
+/// Image paths are relative to the report's folder; render(prefix) prefixes them, so a
+/// study's report can be embedded in the report of `study all` one folder up.
+class Report {
+public:
+    explicit Report(std::string title) : title_(std::move(title)) {}
+    void heading(std::string text) { blocks_.push_back({Kind::heading, std::move(text), ""}); }
+    void paragraph(std::string text) { blocks_.push_back({Kind::paragraph, std::move(text), ""}); }
+    void code(std::string text) { blocks_.push_back({Kind::code, std::move(text), ""}); }
+    void table(const Table& t) { blocks_.push_back({Kind::table, t.markdown(), ""}); }
+    void image(std::string alt, std::string path) {
+        blocks_.push_back({Kind::image, std::move(alt), std::move(path)});
+    }
+    void link(std::string text, std::string path) {
+        blocks_.push_back({Kind::link, std::move(text), std::move(path)});
+    }
+    /// Appends the blocks (not the title) of another report.
+    void append(const Report& other) {
+        blocks_.insert(blocks_.end(), other.blocks_.begin(), other.blocks_.end());
+    }
+    const std::string& title() const noexcept { return title_; }
+
+    /// The Markdown; `prefix` (e.g. "precision/") is put before every image and link
+    /// path, and `level` is the heading level of the title (sections get level + 1).
+    std::string render(std::string_view prefix = "", int level = 1) const;
+
+private:
+    enum class Kind { heading, paragraph, code, table, image, link };
+    struct Block {
+        Kind kind;
+        std::string text;
+        std::string path;
+    };
+    std::string title_;
+    std::vector<Block> blocks_;
+};
+
+/// Writes `text` to `file` (creating its folder); throws std::runtime_error on failure.
+void write_text_file(const std::filesystem::path& file, std::string_view text);
+
+/// "12.34%"-style and scientific formatting used in every table.
+std::string format_rate(std::uint64_t wrong, std::uint64_t total);
+std::string format_fraction(double value);
+
+/// Prints `text` to the run's log, if any.
+void log_line(const RunOptions& run, std::string_view text);
+
+}  // namespace exidel::research

@@ -1,0 +1,244 @@
+// exidel::research: the four studies of `exidel study`. Each takes its own options and
+// the common RunOptions, writes report.md, CSVs and pictures into run.out, and returns
+// what it measured (for the tests and for `study all`).
+//
+//   failure-map    one predicate evaluated while one input point moves over a W x H grid
+//                  of ulp steps (Kettner, Mehlhorn, Pion, Schirra, Yap, CGTA 2008)
+//   precision      wrong-sign rate of the MPFR kernel against the exact kernel, per
+//                  formulation, near-degenerate family and precision
+//   triangulation  every kernel x in-circle policy x family: how the triangulation ends
+//                  (Delaunay, valid but not Delaunay, invalid, failure), with minimal
+//                  failing inputs written as fixtures
+//   stages         which stage of the adaptive kernel decides, on predicate streams and
+//                  inside triangulations
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "exidel/delaunay/result.hpp"
+#include "exidel/research/common.hpp"
+#include "exidel/research/graphics.hpp"
+#include "exidel/testing/families.hpp"
+
+namespace exidel::research {
+
+// =================================================================================
+// failure-map
+
+/// One failure-map configuration: the points of one query, the point that moves, and
+/// the order in which the points are passed to the predicate.
+struct FailureMapSpec {
+    std::string name;                 ///< preset name, or "custom"
+    std::string description;
+    Formulation formulation = Formulation::orient2d;
+    std::vector<Point2> points;       ///< arity(formulation) points
+    std::size_t pivot = 0;            ///< index into points of the point that moves
+    std::vector<std::size_t> order;   ///< argument i of the predicate is points[order[i]]
+    int width = 256, height = 256;
+    std::int64_t step = 1;            ///< ulps per cell
+    bool centered = false;            ///< window [-W/2, W/2) instead of [0, W)
+};
+
+/// The built-in configurations: kettner1..3 (FIELD_NOTES, the paper's p moved, the
+/// formula pivoting on p), kettner1-pivot-q and -r (the same points with q or r first),
+/// and circle/cosine configurations of four exactly cocircular points (a lattice circle
+/// of radius 5 scaled by 2^-s around (1, 1), s = 2, 12, 24), d moved around its place.
+std::vector<FailureMapSpec> failure_map_presets();
+/// Throws std::invalid_argument naming the presets when `name` is not one.
+FailureMapSpec failure_map_preset(std::string_view name);
+/// Checks sizes, arity, pivot and order; throws std::invalid_argument on bad specs.
+void validate(const FailureMapSpec& spec);
+
+struct SignCounts {
+    std::uint64_t negative = 0, zero = 0, positive = 0;
+    void add(Sign s) { (s == Sign::negative ? negative : s == Sign::zero ? zero : positive) += 1; }
+};
+
+struct FailureMap {
+    FailureMapSpec spec;
+    std::string kernel;
+    std::vector<Sign> signs, exact;  ///< height rows of width cells, row j = offset j in y
+    SignCounts counts, exact_counts;
+    std::uint64_t wrong = 0;
+    double wrong_rate() const { return signs.empty() ? 0 : double(wrong) / double(signs.size()); }
+};
+
+/// Evaluates the map (jobs threads; the result does not depend on jobs).
+FailureMap compute_failure_map(const FailureMapSpec& spec, const Kernel& kernel, unsigned jobs,
+                               Progress* progress = nullptr);
+
+/// Three panels side by side, 2 px per cell when the map is at most 256 wide: the
+/// kernel's signs, the exact signs, and the exact signs faded with every wrong cell in
+/// red. Colours: positive blue, zero white, negative amber; y grows upward.
+Image render_failure_map(const FailureMap& map);
+
+struct FailureMapOptions {
+    std::vector<FailureMapSpec> specs;   ///< empty: the default preset list
+    std::vector<std::string> kernels;    ///< empty: double, long-double, mpfr:64, adaptive, exact
+    std::optional<int> width, height;    ///< override every spec's window
+};
+
+struct FailureMapRow {
+    std::string preset, kernel, png;  ///< png: file name inside run.out
+    SignCounts counts, exact_counts;
+    std::uint64_t wrong = 0, cells = 0;
+};
+
+struct StudyResult {
+    Report report{""};
+    Table table;  ///< the main table (also written as CSV)
+};
+
+struct FailureMapStudy : StudyResult {
+    std::vector<FailureMapRow> rows;
+};
+
+FailureMapStudy run_failure_map_study(const FailureMapOptions& options, const RunOptions& run);
+
+// =================================================================================
+// precision
+
+struct PrecisionOptions {
+    std::vector<unsigned> bits;                  ///< empty: 24..128 by 8 (with 53, 64), then 160..512
+    std::vector<testing::Family> families;       ///< empty: the near-degenerate families
+    std::size_t samples = 0;                     ///< queries per family and formulation; 0: default
+};
+
+struct PrecisionCell {
+    Formulation formulation;
+    testing::Family family;
+    unsigned bits;
+    std::uint64_t wrong = 0, total = 0;
+};
+
+struct PrecisionStudy : StudyResult {
+    std::vector<PrecisionCell> cells;
+};
+
+PrecisionStudy run_precision_study(const PrecisionOptions& options, const RunOptions& run);
+
+// =================================================================================
+// triangulation
+
+enum class Outcome {
+    delaunay,      ///< certified Delaunay triangulation
+    not_delaunay,  ///< a valid triangulation of the points, some edge not locally Delaunay
+    invalid,       ///< not a valid triangulation (detail: the certifier's first finding)
+    failure,       ///< the algorithm stopped itself (detail: its FailureKind)
+    guard,         ///< the predicate-call budget ran out (never expected)
+};
+inline constexpr std::array all_outcomes{Outcome::delaunay, Outcome::not_delaunay, Outcome::invalid,
+                                         Outcome::failure, Outcome::guard};
+std::string_view to_string(Outcome o) noexcept;
+
+struct Classification {
+    Outcome outcome = Outcome::delaunay;
+    std::string detail;  ///< FindingKind or FailureKind name; empty for delaunay
+};
+
+/// Triangulates `points` with `kernel` and `policy` (at most call_budget predicate calls;
+/// 0 means 64 n^2 + 10^6) and certifies the result exactly.
+Classification classify_triangulation(std::span<const Point2> points, const Kernel& kernel,
+                                      delaunay::InCirclePolicy policy,
+                                      std::uint64_t call_budget = 0);
+
+/// Delta debugging: a smallest subset of `points` (no single point removable) whose
+/// outcome is still `target`.outcome (and, for failures, the same FailureKind).
+std::vector<Point2> shrink_failing_input(std::vector<Point2> points, const Kernel& kernel,
+                                         delaunay::InCirclePolicy policy,
+                                         const Classification& target);
+
+/// Fixture text: '#' comment lines (header), then "x y" with C99 hex floats, which
+/// `exidel triangulate -i FILE` reads back exactly.
+std::string fixture_text(std::span<const Point2> points, std::span<const std::string> header);
+
+struct TriangulationOptions {
+    std::vector<std::string> kernels;            ///< empty: double, long-double, mpfr:53, mpfr:106, adaptive, exact
+    std::vector<testing::Family> families;       ///< empty: every family
+    std::size_t seeds = 0;                       ///< point sets per family; 0: default
+    std::vector<std::size_t> sizes;              ///< empty: 50, 100, 200, 500 (cycled over seeds)
+    std::size_t shrink_per_class = 2;            ///< fixtures per (kernel, policy, outcome)
+};
+
+struct TriangulationRun {
+    testing::Family family;
+    std::size_t seed_index = 0, size = 0;
+    std::string kernel;
+    delaunay::InCirclePolicy policy;
+    Classification result;
+};
+
+struct Fixture {
+    std::string file;  ///< path relative to run.out
+    std::string kernel;
+    delaunay::InCirclePolicy policy;
+    Classification result;
+    std::size_t original_size = 0, size = 0;
+};
+
+struct TriangulationStudy : StudyResult {
+    std::vector<TriangulationRun> runs;
+    std::vector<Fixture> fixtures;
+};
+
+TriangulationStudy run_triangulation_study(const TriangulationOptions& options,
+                                           const RunOptions& run);
+
+/// Reads a fixture (or any xy point file), classifies it as the study would, and says
+/// so: the `exidel study replay` command.
+Classification replay_fixture(const std::filesystem::path& file, const Kernel& kernel,
+                              delaunay::InCirclePolicy policy);
+
+// =================================================================================
+// stages
+
+/// Counts per predicate (orient2d, incircle, incircle_cosine) and AdaptiveStage.
+using StageCounts = std::array<std::array<std::uint64_t, adaptive_stage_count>, 3>;
+
+/// The adaptive kernel, counting which stage decided each call: a PredicateKernel, so
+/// the triangulation template runs with it unchanged.
+struct StageCountingKernel {
+    static constexpr bool is_exact = true;
+    static std::string name() { return "adaptive-counting"; }
+    Sign orient2d(Point2 a, Point2 b, Point2 c) const;
+    Sign incircle(Point2 a, Point2 b, Point2 c, Point2 d) const;
+    Sign incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d) const;
+    mutable StageCounts counts{};  // mutable: the kernel interface is const
+};
+static_assert(PredicateKernel<StageCountingKernel>);
+
+struct StagesOptions {
+    std::vector<testing::Family> families;  ///< empty: every family
+    std::size_t samples = 0;                ///< queries per family and predicate; 0: default
+    std::size_t seeds = 0;                  ///< triangulations per family and policy; 0: default
+    std::size_t size = 0;                   ///< points per triangulation; 0: default
+};
+
+struct StagesRow {
+    testing::Family family;
+    std::string context;  ///< "stream", "triangulation/determinant", "triangulation/cosine"
+    StageCounts counts{};
+};
+
+struct StagesStudy : StudyResult {
+    std::vector<StagesRow> rows;
+};
+
+StagesStudy run_stages_study(const StagesOptions& options, const RunOptions& run);
+
+// =================================================================================
+
+/// All four studies with the quick (or default) presets, each in its own subfolder of
+/// run.out, and run.out/report.md embedding the four reports.
+void run_all_studies(const RunOptions& run);
+
+/// Families by name from a comma-separated list ("all" or "near" allowed).
+std::vector<testing::Family> parse_families(std::string_view list);
+
+}  // namespace exidel::research

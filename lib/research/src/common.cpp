@@ -1,0 +1,251 @@
+// exidel::research: kernels by name, seeds, progress bar, tables and reports.
+#include "exidel/research/common.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+
+namespace exidel::research {
+
+Kernel parse_kernel(std::string_view name) {
+    if (name == "double") return DoubleKernel{};
+    if (name == "long-double") return LongDoubleKernel{};
+    if (name == "adaptive") return AdaptiveKernel{};
+    if (name == "exact") return GmpExactKernel{};
+    if (name.starts_with("mpfr:")) {
+        const std::string_view digits = name.substr(5);
+        unsigned bits = 0;
+        const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), bits);
+        if (ec == std::errc{} && end == digits.data() + digits.size() &&
+            bits >= MpfrKernel::min_bits && bits <= MpfrKernel::max_bits) {
+            return MpfrKernel(bits);
+        }
+        throw std::invalid_argument("bad MPFR precision in '" + std::string(name) +
+                                    "': expected mpfr:<bits> with bits in [" +
+                                    std::to_string(MpfrKernel::min_bits) + ", " +
+                                    std::to_string(MpfrKernel::max_bits) + "]");
+    }
+    throw std::invalid_argument("unknown kernel '" + std::string(name) + "' (expected " +
+                                std::string(kernel_spellings) + ")");
+}
+
+std::string kernel_name(const Kernel& k) {
+    return std::visit(
+        [](const auto& kernel) -> std::string {
+            using K = std::decay_t<decltype(kernel)>;
+            if constexpr (std::is_same_v<K, DoubleKernel>) return "double";
+            else if constexpr (std::is_same_v<K, LongDoubleKernel>) return "long-double";
+            else if constexpr (std::is_same_v<K, AdaptiveKernel>) return "adaptive";
+            else if constexpr (std::is_same_v<K, GmpExactKernel>) return "exact";
+            else return "mpfr:" + std::to_string(kernel.bits());
+        },
+        k);
+}
+
+std::string kernel_file_name(const Kernel& k) {
+    std::string s = kernel_name(k);
+    std::erase(s, ':');
+    return s;
+}
+
+std::string_view to_string(Formulation f) noexcept {
+    switch (f) {
+        case Formulation::orient2d: return "orient2d";
+        case Formulation::incircle: return "incircle";
+        case Formulation::incircle_cosine: return "incircle_cosine";
+    }
+    return "?";
+}
+
+Formulation formulation_from_name(std::string_view name) {
+    for (Formulation f : all_formulations) {
+        if (to_string(f) == name) return f;
+    }
+    throw std::invalid_argument("unknown formulation '" + std::string(name) +
+                                "' (expected orient2d|incircle|incircle_cosine)");
+}
+
+std::uint64_t derive_seed(std::uint64_t seed, std::initializer_list<std::uint64_t> path) {
+    // SplitMix64's finaliser, once per path element: a bijective mix, so different
+    // (seed, path) prefixes never collide by construction at any single step.
+    auto mix = [](std::uint64_t z) {
+        z += 0x9e3779b97f4a7c15ULL;
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+        return z ^ (z >> 31);
+    };
+    std::uint64_t h = mix(seed);
+    for (std::uint64_t p : path) h = mix(h ^ mix(p + 0x632be59bd9b4e019ULL));
+    return h;
+}
+
+std::mutex& rapidcheck_mutex() {
+    static std::mutex m;
+    return m;
+}
+
+// ---------------------------------------------------------------------------------
+
+Progress::Progress(std::string label, std::size_t total, bool allowed)
+    : label_(std::move(label)),
+      total_(total),
+      enabled_(allowed && total > 0 && isatty(STDERR_FILENO) == 1),
+      start_(std::chrono::steady_clock::now()) {}
+
+Progress::~Progress() {
+    if (!drawn_) return;
+    draw(done_.load());
+    std::fputs("\n", stderr);
+    std::fflush(stderr);
+}
+
+void Progress::advance(std::size_t n) {
+    const std::size_t done = done_.fetch_add(n) + n;
+    if (!enabled_) return;
+    const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(
+                        std::chrono::steady_clock::now() - start_)
+                        .count();
+    // Silent for the first second; then at most one redraw per 100 ms.
+    if (ms < 1000) return;
+    std::int64_t last = last_draw_ms_.load();
+    if (last >= 0 && ms - last < 100) return;
+    if (!last_draw_ms_.compare_exchange_strong(last, ms)) return;
+    const std::unique_lock lock(draw_mutex_, std::try_to_lock);
+    if (lock.owns_lock()) draw(done);
+}
+
+void Progress::draw(std::size_t done) {
+    constexpr int width = 30;
+    done = std::min(done, total_);
+    const double f = total_ == 0 ? 1.0 : double(done) / double(total_);
+    const int filled = static_cast<int>(f * width);
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    std::string bar(static_cast<std::size_t>(filled), '#');
+    bar.resize(width, '.');
+    std::fprintf(stderr, "\r%s [%s] %zu/%zu  %.0f s ", label_.c_str(), bar.c_str(), done, total_,
+                 elapsed);
+    std::fflush(stderr);
+    drawn_ = true;
+}
+
+// ---------------------------------------------------------------------------------
+
+std::string Table::markdown() const {
+    std::ostringstream s;
+    auto row = [&](const std::vector<std::string>& cells) {
+        s << '|';
+        for (const std::string& c : cells) s << ' ' << c << " |";
+        s << '\n';
+    };
+    row(header);
+    s << '|';
+    for (std::size_t i = 0; i < header.size(); ++i) s << "---|";
+    s << '\n';
+    for (const auto& r : rows) row(r);
+    return s.str();
+}
+
+std::string Table::csv() const {
+    std::ostringstream s;
+    auto cell = [&](const std::string& c) {
+        if (c.find_first_of(",\"\n") == std::string::npos) {
+            s << c;
+            return;
+        }
+        s << '"';
+        for (char ch : c) s << (ch == '"' ? "\"\"" : std::string(1, ch));
+        s << '"';
+    };
+    auto row = [&](const std::vector<std::string>& cells) {
+        for (std::size_t i = 0; i < cells.size(); ++i) {
+            if (i) s << ',';
+            cell(cells[i]);
+        }
+        s << '\n';
+    };
+    row(header);
+    for (const auto& r : rows) row(r);
+    return s.str();
+}
+
+std::string Table::text() const {
+    std::vector<std::size_t> width(header.size(), 0);
+    auto measure = [&](const std::vector<std::string>& cells) {
+        for (std::size_t i = 0; i < cells.size() && i < width.size(); ++i) {
+            width[i] = std::max(width[i], cells[i].size());
+        }
+    };
+    measure(header);
+    for (const auto& r : rows) measure(r);
+    std::ostringstream s;
+    auto row = [&](const std::vector<std::string>& cells) {
+        for (std::size_t i = 0; i < cells.size(); ++i) {
+            s << cells[i];
+            if (i + 1 < cells.size() && i < width.size()) {
+                s << std::string(width[i] - cells[i].size() + 2, ' ');
+            }
+        }
+        s << '\n';
+    };
+    row(header);
+    for (const auto& r : rows) row(r);
+    return s.str();
+}
+
+std::string Report::render(std::string_view prefix, int level) const {
+    std::ostringstream s;
+    s << std::string(static_cast<std::size_t>(level), '#') << ' ' << title_ << "\n\n";
+    for (const Block& b : blocks_) {
+        switch (b.kind) {
+            case Kind::heading:
+                s << std::string(static_cast<std::size_t>(level + 1), '#') << ' ' << b.text << "\n\n";
+                break;
+            case Kind::paragraph: s << b.text << "\n\n"; break;
+            case Kind::code: s << "```\n" << b.text << (b.text.ends_with('\n') ? "" : "\n") << "```\n\n"; break;
+            case Kind::table: s << b.text << '\n'; break;
+            case Kind::image: s << "![" << b.text << "](" << prefix << b.path << ")\n\n"; break;
+            case Kind::link: s << "[" << b.text << "](" << prefix << b.path << ")\n\n"; break;
+        }
+    }
+    return s.str();
+}
+
+void write_text_file(const std::filesystem::path& file, std::string_view text) {
+    if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
+    std::ofstream out(file, std::ios::binary);
+    out.write(text.data(), static_cast<std::streamsize>(text.size()));
+    out.close();
+    if (!out) throw std::runtime_error("cannot write " + file.string());
+}
+
+std::string format_rate(std::uint64_t wrong, std::uint64_t total) {
+    if (total == 0) return "-";
+    char buf[32];
+    const double r = double(wrong) / double(total);
+    if (wrong == 0) return "0";
+    std::snprintf(buf, sizeof buf, r >= 1e-3 ? "%.4f" : "%.2e", r);
+    return buf;
+}
+
+std::string format_fraction(double value) {
+    char buf[32];
+    if (value == 0) return "0";
+    std::snprintf(buf, sizeof buf, value >= 1e-3 ? "%.4f" : "%.2e", value);
+    return buf;
+}
+
+void log_line(const RunOptions& run, std::string_view text) {
+    if (!run.log) return;
+    *run.log << text;
+    if (!text.ends_with('\n')) *run.log << '\n';
+    run.log->flush();
+}
+
+}  // namespace exidel::research

@@ -1,0 +1,280 @@
+// exidel::research: failure maps (Kettner, Mehlhorn, Pion, Schirra, Yap, CGTA 2008).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+#include <stdexcept>
+
+#include "exidel/research/studies.hpp"
+#include "exidel/testing/generators.hpp"
+#include "exidel/testing/ulp.hpp"
+
+namespace exidel::research {
+
+namespace {
+
+// Four exactly cocircular points: a lattice circle of radius 5 (3-4-5 triangles) around
+// (2, 2), scaled by 2^-s. a, b, c counter-clockwise; c and d strictly on opposite sides of
+// ab (the cosine test's precondition), ab a chord that is not a diameter. Every
+// coordinate is a dyadic rational near 2, so ulp steps are 2^-51 or 2^-52 and the window
+// never touches zero or the subnormals.
+std::vector<Point2> lattice_circle(int s) {
+    const double r = testing::dyadic(1, -s);
+    const auto at = [&](int x, int y) { return Point2{2 + x * r, 2 + y * r}; };  // exact
+    return {at(-5, 0), at(4, 3), at(-3, 4), at(3, -4)};
+}
+
+FailureMapSpec kettner(int index, std::vector<std::size_t> order, std::string name) {
+    const auto& c = testing::kettner_configurations[static_cast<std::size_t>(index)];
+    FailureMapSpec s;
+    s.name = std::move(name);
+    s.formulation = Formulation::orient2d;
+    s.points = {c[0], c[1], c[2]};
+    s.pivot = 0;
+    const char* letters = "pqr";
+    std::string args;
+    for (std::size_t i : order) args += letters[i];
+    s.order = std::move(order);
+    s.description = "Kettner et al. configuration " + std::to_string(index + 1) +
+                    ": p moved over [0, 256)^2 ulp steps, orient2d(" + args[0] + ", " + args[1] +
+                    ", " + args[2] + ") (the formula subtracts its first argument, " + args[0] +
+                    ")";
+    return s;
+}
+
+FailureMapSpec circle(Formulation f, int s, std::size_t pivot, std::string name) {
+    FailureMapSpec spec;
+    spec.name = std::move(name);
+    spec.formulation = f;
+    spec.points = lattice_circle(s);
+    spec.pivot = pivot;
+    spec.order = {0, 1, 2, 3};
+    spec.centered = true;
+    const char* letters = "abcd";
+    spec.description = std::string(to_string(f)) + "(a, b, c, d) for four exactly cocircular points " +
+                       "(radius 5 * 2^-" + std::to_string(s) + " around (2, 2)); " +
+                       letters[pivot] + " moved over [-128, 128)^2 ulp steps" +
+                       (f == Formulation::incircle ? "; the formula subtracts d"
+                                                   : "; the formula subtracts c and d");
+    return spec;
+}
+
+const Rgb colour_positive{66, 120, 200}, colour_zero{255, 255, 255}, colour_negative{245, 190, 60},
+    colour_wrong{215, 25, 28}, colour_gap{200, 200, 200};
+
+Rgb colour(Sign s) {
+    return s == Sign::positive ? colour_positive : s == Sign::zero ? colour_zero : colour_negative;
+}
+
+Rgb faded(Rgb c) {
+    return {static_cast<std::uint8_t>((c.r + 3 * 255) / 4), static_cast<std::uint8_t>((c.g + 3 * 255) / 4),
+            static_cast<std::uint8_t>((c.b + 3 * 255) / 4)};
+}
+
+std::string counts_text(const SignCounts& c) {
+    return std::to_string(c.negative) + " / " + std::to_string(c.zero) + " / " +
+           std::to_string(c.positive);
+}
+
+}  // namespace
+
+std::vector<FailureMapSpec> failure_map_presets() {
+    std::vector<FailureMapSpec> v{
+        kettner(0, {0, 1, 2}, "kettner1"),
+        kettner(1, {0, 1, 2}, "kettner2"),
+        kettner(2, {0, 1, 2}, "kettner3"),
+        kettner(0, {1, 2, 0}, "kettner1-pivot-q"),
+        kettner(0, {2, 0, 1}, "kettner1-pivot-r"),
+    };
+    for (int s : {2, 12, 24}) {
+        v.push_back(circle(Formulation::incircle, s, 3, "incircle-s" + std::to_string(s)));
+    }
+    v.push_back(circle(Formulation::incircle, 12, 0, "incircle-s12-move-a"));
+    for (int s : {2, 12, 24}) {
+        v.push_back(circle(Formulation::incircle_cosine, s, 3, "cosine-s" + std::to_string(s)));
+    }
+    return v;
+}
+
+FailureMapSpec failure_map_preset(std::string_view name) {
+    std::string names;
+    for (FailureMapSpec& s : failure_map_presets()) {
+        if (s.name == name) return s;
+        names += (names.empty() ? "" : ", ") + s.name;
+    }
+    throw std::invalid_argument("unknown failure-map preset '" + std::string(name) +
+                                "' (presets: " + names + ")");
+}
+
+void validate(const FailureMapSpec& s) {
+    const std::size_t n = arity(s.formulation);
+    if (s.points.size() != n) {
+        throw std::invalid_argument(std::string(to_string(s.formulation)) + " needs " +
+                                    std::to_string(n) + " points, got " +
+                                    std::to_string(s.points.size()));
+    }
+    for (const Point2& p : s.points) {
+        if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
+            throw std::invalid_argument("failure map points must be finite");
+        }
+    }
+    if (s.pivot >= n) throw std::invalid_argument("the moving point index must be below " + std::to_string(n));
+    std::vector<std::size_t> sorted = s.order;
+    std::sort(sorted.begin(), sorted.end());
+    std::vector<std::size_t> identity(n);
+    std::iota(identity.begin(), identity.end(), std::size_t{0});
+    if (sorted != identity) {
+        throw std::invalid_argument("the argument order must be a permutation of the " +
+                                    std::to_string(n) + " points");
+    }
+    if (s.width < 1 || s.height < 1 || s.width > 4096 || s.height > 4096) {
+        throw std::invalid_argument("failure map width and height must be in [1, 4096]");
+    }
+    if (s.step < 1 || s.step > (std::int64_t{1} << 40)) {
+        throw std::invalid_argument("failure map step must be in [1, 2^40] ulps");
+    }
+}
+
+FailureMap compute_failure_map(const FailureMapSpec& spec, const Kernel& kernel, unsigned jobs,
+                               Progress* progress) {
+    validate(spec);
+    FailureMap m;
+    m.spec = spec;
+    m.kernel = kernel_name(kernel);
+    const std::size_t W = static_cast<std::size_t>(spec.width), H = static_cast<std::size_t>(spec.height);
+    // Coordinates of the moving point per column and per row, computed once (nudge walks
+    // one ulp at a time).
+    const Point2 base = spec.points[spec.pivot];
+    const auto offset = [&](std::size_t i, std::size_t size) {
+        const auto k = static_cast<std::int64_t>(i) - (spec.centered ? static_cast<std::int64_t>(size / 2) : 0);
+        return k * spec.step;
+    };
+    std::vector<double> xs(W), ys(H);
+    for (std::size_t i = 0; i < W; ++i) xs[i] = testing::nudge(base.x, offset(i, W));
+    for (std::size_t j = 0; j < H; ++j) ys[j] = testing::nudge(base.y, offset(j, H));
+
+    m.signs.resize(W * H);
+    m.exact.resize(W * H);
+    const std::size_t n = arity(spec.formulation);
+    for_each_chunk(H, jobs, progress, [&](std::size_t j) {
+        std::vector<Point2> pts = spec.points;
+        std::array<Point2, 4> args{};
+        for (std::size_t i = 0; i < W; ++i) {
+            pts[spec.pivot] = {xs[i], ys[j]};
+            for (std::size_t a = 0; a < n; ++a) args[a] = pts[spec.order[a]];
+            const std::span<const Point2> q(args.data(), n);
+            m.signs[j * W + i] = std::visit([&](const auto& k) { return evaluate(k, spec.formulation, q); }, kernel);
+            m.exact[j * W + i] = evaluate(GmpExactKernel{}, spec.formulation, q);
+        }
+    });
+    for (std::size_t c = 0; c < W * H; ++c) {
+        m.counts.add(m.signs[c]);
+        m.exact_counts.add(m.exact[c]);
+        m.wrong += m.signs[c] != m.exact[c];
+    }
+    return m;
+}
+
+Image render_failure_map(const FailureMap& m) {
+    const int W = m.spec.width, H = m.spec.height;
+    const int scale = W <= 256 && H <= 256 ? 2 : 1;
+    const int gap = 8;
+    Image img(3 * W * scale + 2 * gap, H * scale, colour_gap);
+    for (int j = 0; j < H; ++j) {
+        for (int i = 0; i < W; ++i) {
+            const std::size_t c = std::size_t(j) * std::size_t(W) + std::size_t(i);
+            const Sign got = m.signs[c], want = m.exact[c];
+            const Rgb panels[3] = {colour(got), colour(want), got == want ? faded(colour(want)) : colour_wrong};
+            for (int p = 0; p < 3; ++p) {
+                const int x0 = p * (W * scale + gap) + i * scale;
+                const int y0 = (H - 1 - j) * scale;  // y grows upward
+                for (int dy = 0; dy < scale; ++dy) {
+                    for (int dx = 0; dx < scale; ++dx) img.at(x0 + dx, y0 + dy) = panels[p];
+                }
+            }
+        }
+    }
+    return img;
+}
+
+FailureMapStudy run_failure_map_study(const FailureMapOptions& options, const RunOptions& run) {
+    std::vector<FailureMapSpec> specs = options.specs;
+    if (specs.empty()) {
+        if (run.quick) {
+            for (const char* name : {"kettner1", "kettner2", "kettner3", "incircle-s12", "cosine-s12"}) {
+                specs.push_back(failure_map_preset(name));
+            }
+        } else {
+            specs = failure_map_presets();
+        }
+    }
+    std::vector<std::string> kernel_names = options.kernels;
+    if (kernel_names.empty()) {
+        kernel_names = run.quick ? std::vector<std::string>{"double", "adaptive", "exact"}
+                                 : std::vector<std::string>{"double", "long-double", "mpfr:106",
+                                                            "adaptive", "exact"};
+    }
+    std::vector<Kernel> kernels;
+    for (const std::string& k : kernel_names) kernels.push_back(parse_kernel(k));
+    for (FailureMapSpec& s : specs) {
+        if (options.width) s.width = *options.width;
+        if (options.height) s.height = *options.height;
+        validate(s);
+    }
+
+    FailureMapStudy study;
+    study.table.header = {"preset", "kernel", "predicate", "cells", "neg / zero / pos",
+                          "exact neg / zero / pos", "wrong", "wrong rate"};
+    std::size_t rows_total = 0;
+    for (const FailureMapSpec& s : specs) rows_total += std::size_t(s.height) * kernels.size();
+    Progress progress("failure-map", rows_total, run.progress);
+
+    Report pictures("");  // per preset: description and one picture per kernel
+    for (const FailureMapSpec& spec : specs) {
+        pictures.heading(spec.name);
+        std::ostringstream pts;
+        pts.precision(17);
+        for (std::size_t i = 0; i < spec.points.size(); ++i) {
+            pts << (i ? ", " : "") << '(' << spec.points[i].x << ", " << spec.points[i].y << ')';
+        }
+        pictures.paragraph(spec.description + ". Points: " + pts.str() + ".");
+        for (const Kernel& kernel : kernels) {
+            const FailureMap m = compute_failure_map(spec, kernel, run.jobs, &progress);
+            FailureMapRow row;
+            row.preset = spec.name;
+            row.kernel = m.kernel;
+            row.png = spec.name + "-" + kernel_file_name(kernel) + ".png";
+            row.counts = m.counts;
+            row.exact_counts = m.exact_counts;
+            row.wrong = m.wrong;
+            row.cells = m.signs.size();
+            write_png(run.out / row.png, render_failure_map(m));
+            pictures.image(spec.name + ", " + m.kernel + ": " + std::to_string(m.wrong) + " wrong",
+                           row.png);
+            study.table.rows.push_back({spec.name, m.kernel, std::string(to_string(spec.formulation)),
+                                        std::to_string(row.cells), counts_text(m.counts),
+                                        counts_text(m.exact_counts), std::to_string(m.wrong),
+                                        format_rate(m.wrong, row.cells)});
+            study.rows.push_back(std::move(row));
+        }
+    }
+    study.report = Report("Failure maps");
+    study.report.paragraph(
+        "Each map evaluates one predicate while one input point moves over a grid of ulp "
+        "steps (Kettner, Mehlhorn, Pion, Schirra, Yap, CGTA 2008). Each picture has three "
+        "panels: the kernel's signs, the exact signs (GMP), and the exact signs faded with "
+        "every cell the kernel got wrong in **red**. Blue: positive, amber: negative, white: "
+        "zero; x grows to the right, y upward. Failure maps use no randomness (seed " +
+        std::to_string(run.seed) + " is recorded for uniformity).");
+    study.report.paragraph(
+        "Counts per sign (negative / zero / positive) for the kernel and for the exact "
+        "reference; `wrong` cells have a sign different from the exact one.");
+    study.report.table(study.table);
+    study.report.link("failure_map.csv", "failure_map.csv");
+    study.report.append(pictures);
+    write_text_file(run.out / "failure_map.csv", study.table.csv());
+    return study;
+}
+
+}  // namespace exidel::research

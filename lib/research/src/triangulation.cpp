@@ -1,0 +1,353 @@
+// exidel::research: what wrong signs do to the triangulation. Every kernel and in-circle
+// policy on the same point sets; each outcome classified by the exact certifier; the
+// first wrong outcomes of each kind shrunk to minimal fixtures.
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "exidel/delaunay/certify.hpp"
+#include "exidel/delaunay/triangulate.hpp"
+#include "exidel/io/points.hpp"
+#include "exidel/research/studies.hpp"
+
+namespace exidel::research {
+
+namespace {
+
+constexpr std::uint64_t triangulation_study_id = 3;
+
+struct GuardExceeded {};
+
+/// Any kernel, with a budget of predicate calls: the run is abandoned (by an exception,
+/// which the triangulation's vectors survive) when the budget is spent. The algorithm
+/// has its own guards and never loops; this one makes "never a hang" independent of
+/// that claim.
+template <PredicateKernel K>
+struct GuardedKernel {
+    static constexpr bool is_exact = K::is_exact;
+    K kernel;
+    std::uint64_t budget;
+    mutable std::uint64_t calls = 0;  // mutable: the kernel interface is const
+
+    std::string name() const { return kernel.name(); }
+    void spend() const {
+        if (++calls > budget) throw GuardExceeded{};
+    }
+    Sign orient2d(Point2 a, Point2 b, Point2 c) const {
+        spend();
+        return kernel.orient2d(a, b, c);
+    }
+    Sign incircle(Point2 a, Point2 b, Point2 c, Point2 d) const {
+        spend();
+        return kernel.incircle(a, b, c, d);
+    }
+    Sign incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d) const {
+        spend();
+        return kernel.incircle_cosine(a, b, c, d);
+    }
+};
+
+std::string_view policy_name(delaunay::InCirclePolicy p) {
+    return p == delaunay::InCirclePolicy::cosine ? "cosine" : "determinant";
+}
+
+constexpr delaunay::InCirclePolicy both_policies[] = {delaunay::InCirclePolicy::determinant,
+                                                      delaunay::InCirclePolicy::cosine};
+
+bool is_wrong(Outcome o) { return o != Outcome::delaunay; }
+
+std::string describe(const Classification& c) {
+    return std::string(to_string(c.outcome)) + (c.detail.empty() ? "" : " (" + c.detail + ")");
+}
+
+}  // namespace
+
+std::string_view to_string(Outcome o) noexcept {
+    switch (o) {
+        case Outcome::delaunay: return "delaunay";
+        case Outcome::not_delaunay: return "not_delaunay";
+        case Outcome::invalid: return "invalid";
+        case Outcome::failure: return "failure";
+        case Outcome::guard: return "guard";
+    }
+    return "?";
+}
+
+Classification classify_triangulation(std::span<const Point2> points, const Kernel& kernel,
+                                      delaunay::InCirclePolicy policy, std::uint64_t call_budget) {
+    const std::uint64_t n = points.size();
+    const std::uint64_t budget = call_budget ? call_budget : 64 * n * n + 1'000'000;
+    const delaunay::Options options{policy};
+    std::optional<delaunay::Result> result;
+    try {
+        result = std::visit(
+            [&](const auto& k) {
+                const GuardedKernel<std::decay_t<decltype(k)>> guarded{k, budget};
+                return delaunay::triangulate(points, guarded, options);
+            },
+            kernel);
+    } catch (const GuardExceeded&) {
+        return {Outcome::guard, "more than " + std::to_string(budget) + " predicate calls"};
+    }
+    if (result->failure) return {Outcome::failure, std::string(delaunay::to_string(result->failure->kind))};
+    const delaunay::Certificate cert = delaunay::certify(points, result->triangulation);
+    if (cert.ok()) return {Outcome::delaunay, ""};
+    // The Delaunay check runs last and only when every earlier check passed, so a first
+    // finding of not_delaunay means all of them are (the list is capped at 64).
+    if (cert.findings.front().kind == delaunay::FindingKind::not_delaunay) {
+        return {Outcome::not_delaunay, std::to_string(cert.total_findings) + " edges"};
+    }
+    return {Outcome::invalid, std::string(delaunay::to_string(cert.findings.front().kind))};
+}
+
+std::vector<Point2> shrink_failing_input(std::vector<Point2> points, const Kernel& kernel,
+                                         delaunay::InCirclePolicy policy, const Classification& target) {
+    const auto still_fails = [&](const std::vector<Point2>& candidate) {
+        const Classification c = classify_triangulation(candidate, kernel, policy);
+        return c.outcome == target.outcome &&
+               (target.outcome != Outcome::failure || c.detail == target.detail);
+    };
+    // Delta debugging: remove chunks of halving size while the outcome persists; at size
+    // one, sweep until no single point can go (the result is 1-minimal). The attempt
+    // budget bounds the time on large inputs; what it returns always still fails.
+    std::size_t attempts = 0;
+    constexpr std::size_t max_attempts = 20000;
+    std::size_t chunk = std::max<std::size_t>(points.size() / 2, 1);
+    for (;;) {
+        bool removed = false;
+        for (std::size_t start = 0; start < points.size() && attempts < max_attempts;) {
+            const std::size_t end = std::min(points.size(), start + chunk);
+            std::vector<Point2> candidate;
+            candidate.reserve(points.size());
+            candidate.insert(candidate.end(), points.begin(), points.begin() + std::ptrdiff_t(start));
+            candidate.insert(candidate.end(), points.begin() + std::ptrdiff_t(end), points.end());
+            ++attempts;
+            if (still_fails(candidate)) {
+                points = std::move(candidate);
+                removed = true;
+            } else {
+                start = end;
+            }
+        }
+        if (attempts >= max_attempts) break;
+        if (chunk > 1) {
+            chunk = std::max<std::size_t>(chunk / 2, 1);
+        } else if (!removed) {
+            break;
+        }
+    }
+    return points;
+}
+
+std::string fixture_text(std::span<const Point2> points, std::span<const std::string> header) {
+    std::string s;
+    for (const std::string& line : header) s += "# " + line + "\n";
+    char buf[80];
+    for (const Point2& p : points) {
+        std::snprintf(buf, sizeof buf, "%a %a\n", p.x, p.y);
+        s += buf;
+    }
+    return s;
+}
+
+Classification replay_fixture(const std::filesystem::path& file, const Kernel& kernel,
+                              delaunay::InCirclePolicy policy) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw std::runtime_error("cannot open " + file.string());
+    const std::vector<Point2> points = io::read_points(in, io::point_format_from_path(file.string()));
+    return classify_triangulation(points, kernel, policy);
+}
+
+TriangulationStudy run_triangulation_study(const TriangulationOptions& options, const RunOptions& run) {
+    std::vector<std::string> kernel_names = options.kernels;
+    if (kernel_names.empty()) {
+        kernel_names = {"double", "long-double", "mpfr:53", "mpfr:106", "adaptive", "exact"};
+    }
+    std::vector<Kernel> kernels;
+    for (const std::string& k : kernel_names) kernels.push_back(parse_kernel(k));
+    std::vector<testing::Family> families = options.families;
+    if (families.empty()) {
+        for (const auto& info : testing::all_families()) families.push_back(info.family);
+    }
+    const std::size_t seeds = options.seeds ? options.seeds : (run.quick ? 4 : 16);
+    const std::vector<std::size_t> sizes =
+        options.sizes.empty() ? std::vector<std::size_t>{50, 100, 200, 500} : options.sizes;
+    for (std::size_t n : sizes) {
+        if (n < 1 || n > 100000) throw std::invalid_argument("triangulation sizes must be in [1, 100000]");
+    }
+
+    // One chunk per (family, seed): one point set, every kernel and policy on it.
+    struct Chunk {
+        testing::Family family;
+        std::size_t seed_index;
+        std::vector<Point2> points;
+        std::vector<TriangulationRun> runs;
+    };
+    std::vector<Chunk> chunks;
+    for (testing::Family f : families) {
+        for (std::size_t s = 0; s < seeds; ++s) chunks.push_back({f, s, {}, {}});
+    }
+    Progress progress("triangulation", chunks.size(), run.progress);
+    for_each_chunk(chunks.size(), run.jobs, &progress, [&](std::size_t i) {
+        Chunk& c = chunks[i];
+        const std::size_t n = sizes[c.seed_index % sizes.size()];
+        {
+            const std::lock_guard lock(rapidcheck_mutex());
+            const rc::Random random(derive_seed(run.seed, {triangulation_study_id, std::uint64_t(c.family),
+                                                           c.seed_index}));
+            c.points = testing::gen_points(c.family, n)(random).value();
+        }
+        for (const Kernel& k : kernels) {
+            for (delaunay::InCirclePolicy p : both_policies) {
+                c.runs.push_back({c.family, c.seed_index, n, kernel_name(k), p,
+                                  classify_triangulation(c.points, k, p)});
+            }
+        }
+    });
+
+    TriangulationStudy study;
+    // Counts per (family, kernel, policy) and per (kernel, policy).
+    using Key = std::tuple<std::size_t, std::size_t, int>;  // family position, kernel position, policy
+    std::map<Key, std::array<std::uint64_t, all_outcomes.size()>> counts;
+    std::map<std::pair<std::size_t, int>, std::array<std::uint64_t, all_outcomes.size()>> totals;
+    std::map<std::pair<std::size_t, int>, std::map<std::string, std::uint64_t>> details;
+    struct Candidate {
+        const Chunk* chunk;
+        std::size_t kernel;
+        TriangulationRun run;
+    };
+    std::vector<Candidate> to_shrink;
+    std::map<std::tuple<std::size_t, int, int>, std::size_t> shrink_count;
+    for (std::size_t ci = 0; ci < chunks.size(); ++ci) {
+        const Chunk& c = chunks[ci];
+        const auto fpos = std::size_t(std::find(families.begin(), families.end(), c.family) - families.begin());
+        for (std::size_t r = 0; r < c.runs.size(); ++r) {
+            const TriangulationRun& tr = c.runs[r];
+            const std::size_t kpos = r / 2;
+            const int pol = int(tr.policy);
+            const auto o = std::size_t(tr.result.outcome);
+            ++counts[{fpos, kpos, pol}][o];
+            ++totals[{kpos, pol}][o];
+            if (is_wrong(tr.result.outcome)) {
+                // Edge counts of not_delaunay outcomes would make one entry per run.
+                ++details[{kpos, pol}][tr.result.outcome == Outcome::not_delaunay
+                                           ? std::string(to_string(tr.result.outcome))
+                                           : describe(tr.result)];
+                std::size_t& taken = shrink_count[{kpos, pol, int(o)}];
+                if (taken < options.shrink_per_class && tr.result.outcome != Outcome::guard) {
+                    ++taken;
+                    to_shrink.push_back({&c, kpos, tr});
+                }
+            }
+            study.runs.push_back(tr);
+        }
+    }
+
+    study.table.header = {"family", "kernel", "incircle"};
+    for (Outcome o : all_outcomes) study.table.header.emplace_back(to_string(o));
+    for (std::size_t f = 0; f < families.size(); ++f) {
+        for (std::size_t k = 0; k < kernels.size(); ++k) {
+            for (delaunay::InCirclePolicy p : both_policies) {
+                const auto& row_counts = counts[{f, k, int(p)}];
+                std::vector<std::string> row{std::string(testing::family_name(families[f])),
+                                             kernel_name(kernels[k]), std::string(policy_name(p))};
+                for (std::uint64_t v : row_counts) row.push_back(std::to_string(v));
+                study.table.rows.push_back(std::move(row));
+            }
+        }
+    }
+    Table summary;
+    summary.header = {"kernel", "incircle", "runs"};
+    for (Outcome o : all_outcomes) summary.header.emplace_back(to_string(o));
+    summary.header.emplace_back("wrong outcomes by kind");
+    for (std::size_t k = 0; k < kernels.size(); ++k) {
+        for (delaunay::InCirclePolicy p : both_policies) {
+            const auto& t = totals[{k, int(p)}];
+            std::uint64_t runs = 0;
+            for (std::uint64_t v : t) runs += v;
+            std::vector<std::string> row{kernel_name(kernels[k]), std::string(policy_name(p)), std::to_string(runs)};
+            for (std::uint64_t v : t) row.push_back(std::to_string(v));
+            std::string kinds;
+            for (const auto& [what, n] : details[{k, int(p)}]) {
+                kinds += (kinds.empty() ? "" : "; ") + what + ": " + std::to_string(n);
+            }
+            row.push_back(kinds.empty() ? "-" : kinds);
+            summary.rows.push_back(std::move(row));
+        }
+    }
+
+    // Shrink the chosen wrong outcomes (in parallel; each is a pure function of its input).
+    std::vector<std::vector<Point2>> shrunk(to_shrink.size());
+    {
+        Progress shrink_progress("shrinking", to_shrink.size(), run.progress);
+        for_each_chunk(to_shrink.size(), run.jobs, &shrink_progress, [&](std::size_t i) {
+            const Candidate& c = to_shrink[i];
+            shrunk[i] = shrink_failing_input(c.chunk->points, kernels[c.kernel], c.run.policy, c.run.result);
+        });
+    }
+    Table fixtures_table;
+    fixtures_table.header = {"fixture", "kernel", "incircle", "outcome", "points (original)", "replays"};
+    for (std::size_t i = 0; i < to_shrink.size(); ++i) {
+        const Candidate& c = to_shrink[i];
+        const Kernel& k = kernels[c.kernel];
+        const std::string kname = kernel_name(k);
+        const std::string file = "fixtures/" + std::string(to_string(c.run.result.outcome)) + "-" +
+                                 kernel_file_name(k) + "-" + std::string(policy_name(c.run.policy)) + "-" +
+                                 std::string(testing::family_name(c.run.family)) + "-s" +
+                                 std::to_string(c.run.seed_index) + ".xy";
+        // The shrunk set's own classification (its detail may differ from the original's
+        // for invalid and not_delaunay outcomes, which shrink by outcome only).
+        const Classification now = classify_triangulation(shrunk[i], k, c.run.policy);
+        const std::string cmd_flags = "--kernel " + kname + " --incircle " + std::string(policy_name(c.run.policy));
+        const std::vector<std::string> header{
+            "exidel study triangulation fixture: " + describe(now),
+            "kernel " + kname + ", incircle policy " + std::string(policy_name(c.run.policy)),
+            "family " + std::string(testing::family_name(c.run.family)) + ", seed index " +
+                std::to_string(c.run.seed_index) + " of study seed " + std::to_string(run.seed) + ", " +
+                std::to_string(c.chunk->points.size()) + " points shrunk to " + std::to_string(shrunk[i].size()),
+            "reproduce: exidel study replay -i FILE " + cmd_flags,
+            now.outcome == Outcome::failure
+                ? "      and: exidel triangulate -i FILE " + cmd_flags + "   (exit status 1: triangulation failed)"
+                : "      and: exidel triangulate -i FILE " + cmd_flags + "   (output differs from --kernel exact)",
+        };
+        write_text_file(run.out / file, fixture_text(shrunk[i], header));
+        study.fixtures.push_back({file, kname, c.run.policy, now, c.chunk->points.size(), shrunk[i].size()});
+        fixtures_table.rows.push_back({"`" + file + "`", kname, std::string(policy_name(c.run.policy)),
+                                       describe(now),
+                                       std::to_string(shrunk[i].size()) + " (" +
+                                           std::to_string(c.chunk->points.size()) + ")",
+                                       now.outcome == c.run.result.outcome ? "yes" : "NO"});
+    }
+
+    write_text_file(run.out / "triangulation.csv", study.table.csv());
+    write_text_file(run.out / "triangulation_summary.csv", summary.csv());
+
+    std::string sizes_text;
+    for (std::size_t n : sizes) sizes_text += (sizes_text.empty() ? "" : ", ") + std::to_string(n);
+    study.report = Report("Triangulation outcomes per kernel and in-circle policy");
+    study.report.paragraph(
+        "Every family of lib/testing, " + std::to_string(seeds) + " point sets each (sizes " + sizes_text +
+        ", cycled; seed " + std::to_string(run.seed) + "); every kernel and both in-circle "
+        "policies triangulate the same point sets. Outcomes, decided by the exact certifier: "
+        "**delaunay** (certified), **not_delaunay** (a valid triangulation with some edge not "
+        "locally Delaunay), **invalid** (not a triangulation of the points; the certifier's first "
+        "finding in the last column), **failure** (the algorithm detected the inconsistency and "
+        "stopped), **guard** (the predicate-call budget of 64 n^2 + 10^6 ran out; never expected).");
+    study.report.table(summary);
+    study.report.paragraph("Minimal failing inputs (delta debugging until no single point can be removed), "
+                           "written as fixtures in hex floats:");
+    if (fixtures_table.rows.empty()) {
+        study.report.paragraph("(no wrong outcome, nothing to shrink)");
+    } else {
+        study.report.table(fixtures_table);
+    }
+    study.report.heading("Per family");
+    study.report.table(study.table);
+    study.report.link("triangulation.csv", "triangulation.csv");
+    study.report.link("triangulation_summary.csv", "triangulation_summary.csv");
+    return study;
+}
+
+}  // namespace exidel::research

@@ -1,0 +1,233 @@
+// Unit tests of the point readers and writers (exidel/io/points.hpp): every format, the
+// error positions, and bit-exact round trips.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "exidel/io/points.hpp"
+
+namespace exidel::io {
+namespace {
+
+using Points = std::vector<Point2>;
+
+bool same_bits(const Points& a, const Points& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        if (std::bit_cast<std::uint64_t>(a[i].x) != std::bit_cast<std::uint64_t>(b[i].x) ||
+            std::bit_cast<std::uint64_t>(a[i].y) != std::bit_cast<std::uint64_t>(b[i].y)) {
+            return false;
+        }
+    }
+    return true;
+}
+
+// The ReadError thrown by parsing `text`, or a test failure if none is.
+ReadError error_of(std::string_view text, PointFormat f) {
+    try {
+        const Points p = parse_points(text, f);
+        ADD_FAILURE() << "parsed " << p.size() << " points from: " << text;
+    } catch (const ReadError& e) {
+        return e;
+    }
+    return ReadError::at_line(0, "none");
+}
+
+void expect_error(std::string_view text, PointFormat f, std::size_t line, std::string_view reason) {
+    const ReadError e = error_of(text, f);
+    EXPECT_EQ(e.line(), line) << e.what();
+    EXPECT_NE(std::string(e.what()).find(reason), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).rfind("line " + std::to_string(line) + ": ", 0), 0u)
+        << e.what();
+}
+
+TEST(PointFormats, NamesAndExtensions) {
+    EXPECT_EQ(point_format_from_path("a.json"), PointFormat::json);
+    EXPECT_EQ(point_format_from_path("dir/a.node"), PointFormat::node);
+    EXPECT_EQ(point_format_from_path("a.f64"), PointFormat::f64);
+    EXPECT_EQ(point_format_from_path("a.csv"), PointFormat::xy);
+    EXPECT_EQ(point_format_from_path("a.xy"), PointFormat::xy);
+    EXPECT_EQ(point_format_from_path("points"), PointFormat::xy);
+    for (PointFormat f : {PointFormat::xy, PointFormat::json, PointFormat::node, PointFormat::f64}) {
+        EXPECT_EQ(point_format_from_name(to_string(f)), f);
+    }
+    EXPECT_FALSE(point_format_from_name("csv"));
+}
+
+TEST(ReadXy, SeparatorsCommentsHeaderAndLineEndings) {
+    const Points p = parse_points(
+        "# a comment line\n"
+        "x,y\n"
+        "1 2\n"
+        "\n"
+        "3,4   # trailing comment\n"
+        "\t5 ,\t6\r\n"
+        "0x1.8p1, -0.1\n"
+        "7e-320 8",  // no final newline; a subnormal is fine
+        PointFormat::xy);
+    ASSERT_EQ(p.size(), 5u);
+    EXPECT_EQ(p[0], (Point2{1, 2}));
+    EXPECT_EQ(p[1], (Point2{3, 4}));
+    EXPECT_EQ(p[2], (Point2{5, 6}));
+    EXPECT_EQ(p[3], (Point2{3, -0.1}));
+    EXPECT_EQ(p[4].x, 7e-320);
+    EXPECT_EQ(p[4].y, 8);
+}
+
+TEST(ReadXy, EmptyInputIsNoPoints) {
+    EXPECT_TRUE(parse_points("", PointFormat::xy).empty());
+    EXPECT_TRUE(parse_points("\n\n# only comments\n  \n", PointFormat::xy).empty());
+    EXPECT_TRUE(parse_points("lon lat\n", PointFormat::xy).empty());  // a header alone
+}
+
+TEST(ReadXy, ErrorsNameTheLine) {
+    expect_error("0 0\n1 1\nfoo 2\n", PointFormat::xy, 3, "x: 'foo' is not a number");
+    expect_error("0 0\n1 nan\n", PointFormat::xy, 2, "y: 'nan' is not a finite number");
+    expect_error("0 0\n\n-inf 1\n", PointFormat::xy, 3, "not a finite number");
+    expect_error("1e400 0\n", PointFormat::xy, 1, "outside the range");
+    expect_error("0 0\n1 2 3\n", PointFormat::xy, 2, "expected 2 coordinates (x y), got 3");
+    expect_error("# c\n\n7\n", PointFormat::xy, 3, "got 1");
+    expect_error("0 0\n1,,2\n", PointFormat::xy, 2, "empty field");
+    expect_error("1,2,\n", PointFormat::xy, 1, "empty field");
+    expect_error(",1,2\n", PointFormat::xy, 1, "empty field");
+    // Only the first line may be a header; "nan inf" is never one.
+    expect_error("0 0\nx y\n", PointFormat::xy, 2, "not a number");
+    expect_error("nan inf\n", PointFormat::xy, 1, "not a finite number");
+    expect_error("x y\nx y\n", PointFormat::xy, 2, "not a number");
+}
+
+TEST(ReadJson, ArrayOfPairs) {
+    const Points p = parse_points(" [ [0, 0],\n[1.5, -2e-3] ,[ -0 ,1E2]]\n\n", PointFormat::json);
+    ASSERT_EQ(p.size(), 3u);
+    EXPECT_EQ(p[1], (Point2{1.5, -2e-3}));
+    EXPECT_EQ(p[2], (Point2{0, 100}));
+    EXPECT_TRUE(std::signbit(p[2].x));
+    EXPECT_TRUE(parse_points("", PointFormat::json).empty());
+    EXPECT_TRUE(parse_points(" \n ", PointFormat::json).empty());
+    EXPECT_TRUE(parse_points("[]", PointFormat::json).empty());
+    EXPECT_TRUE(parse_points("[\n]\n", PointFormat::json).empty());
+}
+
+TEST(ReadJson, ErrorsNameTheLine) {
+    expect_error("[[0, 0],\n [1, 2, 3]]", PointFormat::json, 2, "third coordinate");
+    expect_error("[[0, 0],\n\n [1]]", PointFormat::json, 3, "y is missing");
+    expect_error("[[0, 0],\n [1, NaN]]", PointFormat::json, 2, "not a finite number");
+    expect_error("[[0, 0],\n [Infinity, 1]]", PointFormat::json, 2, "not a finite number");
+    expect_error("[[0, 1e999]]", PointFormat::json, 1, "outside the range");
+    expect_error("[[0x1p3, 0]]", PointFormat::json, 1, "not a JSON number");
+    expect_error("[[01, 0]]", PointFormat::json, 1, "not a JSON number");
+    expect_error("[[+1, 0]]", PointFormat::json, 1, "expected a number");
+    expect_error("[[1., 0]]", PointFormat::json, 1, "digits must follow '.'");
+    expect_error("[[0, 0]]\n[[1, 1]]", PointFormat::json, 2, "after the closing ']'");
+    expect_error("[[0, 0],\n [1, 1]", PointFormat::json, 2, "the end of the input");
+    expect_error("[[0, 0],\n [1, 1],\n]", PointFormat::json, 3, "expected '['");
+    expect_error("{\"points\": []}", PointFormat::json, 1, "expected '['");
+    expect_error("[\n[0, 0]\n[1, 1]]", PointFormat::json, 3, "or ',' after a point");
+}
+
+TEST(ReadNode, ZeroAndOneBasedWithAttributesAndMarkers) {
+    const Points zero = parse_points("# Triangle node file\n3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n",
+                                     PointFormat::node);
+    const Points one = parse_points("3 2 1 1\n1 0 0 7.5 1\n2 1 0 -3 0\n\n3 0 1 0x1p3 1 # c\n",
+                                    PointFormat::node);
+    const Points defaults = parse_points("3\n0 0 0\n1 1 0\n2 0 1\n", PointFormat::node);
+    const Points expected{{0, 0}, {1, 0}, {0, 1}};
+    EXPECT_EQ(zero, expected);
+    EXPECT_EQ(one, expected);
+    EXPECT_EQ(defaults, expected);
+    EXPECT_TRUE(parse_points("", PointFormat::node).empty());
+    EXPECT_TRUE(parse_points("0 2 0 0\n", PointFormat::node).empty());
+}
+
+TEST(ReadNode, ErrorsNameTheLine) {
+    expect_error("3 3 0 0\n", PointFormat::node, 1, "dimension 3, expected 2");
+    expect_error("3 2 0 2\n", PointFormat::node, 1, "markers 2 is outside [0, 1]");
+    expect_error("-1 2 0 0\n", PointFormat::node, 1, "number of vertices -1");
+    expect_error("2 2 0 0 9\n", PointFormat::node, 1, "got 5 fields");
+    expect_error("3 2 0 0\n0 0 0\n1 1 0\n", PointFormat::node, 3, "truncated");
+    expect_error("2 2 0 0\n0 0 0\n1 1 0\n2 0 1\n", PointFormat::node, 4, "more vertex lines");
+    expect_error("2 2 0 0\n0 0 0\n2 1 0\n", PointFormat::node, 3, "vertex index 2, expected 1");
+    expect_error("2 2 0 0\n5 0 0\n", PointFormat::node, 2, "first vertex index");
+    expect_error("2 2 1 0\n0 0 0\n1 1 0\n", PointFormat::node, 2, "expected 4 fields");
+    expect_error("1 2 0 1\n0 0 0 x\n", PointFormat::node, 2, "boundary marker");
+    expect_error("1 2 1 0\n0 0 0 nan\n", PointFormat::node, 2, "attribute");
+    expect_error("1 2 0 0\n0 0 inf\n", PointFormat::node, 2, "y: 'inf' is not a finite number");
+}
+
+std::string f64_bytes(const std::vector<double>& values) {
+    std::string s(values.size() * 8, '\0');
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        const auto bits = std::bit_cast<std::uint64_t>(values[i]);
+        for (int b = 0; b < 8; ++b) s[8 * i + b] = static_cast<char>((bits >> (8 * b)) & 0xff);
+    }
+    return s;
+}
+
+TEST(ReadF64, LittleEndianPairs) {
+    const Points p = parse_points(f64_bytes({1, 2, -0.1, 5e-324}), PointFormat::f64);
+    ASSERT_EQ(p.size(), 2u);
+    EXPECT_EQ(p[0], (Point2{1, 2}));
+    EXPECT_EQ(p[1], (Point2{-0.1, 5e-324}));
+    EXPECT_TRUE(parse_points("", PointFormat::f64).empty());
+}
+
+TEST(ReadF64, ErrorsNameTheByteOffset) {
+    std::string truncated = f64_bytes({1, 2, 3});
+    ReadError e = error_of(truncated, PointFormat::f64);
+    EXPECT_EQ(e.byte_offset(), 16u);
+    EXPECT_EQ(e.line(), 0u);
+    EXPECT_EQ(std::string(e.what()).rfind("byte offset 16: truncated", 0), 0u) << e.what();
+
+    e = error_of(f64_bytes({1, 2, 3, std::numeric_limits<double>::quiet_NaN()}), PointFormat::f64);
+    EXPECT_EQ(e.byte_offset(), 24u);
+    EXPECT_NE(std::string(e.what()).find("y of point 1 is NaN"), std::string::npos) << e.what();
+
+    e = error_of(f64_bytes({-std::numeric_limits<double>::infinity(), 0}), PointFormat::f64);
+    EXPECT_EQ(e.byte_offset(), 0u);
+    EXPECT_NE(std::string(e.what()).find("x of point 0 is infinite"), std::string::npos);
+}
+
+// Doubles that a careless writer or reader would change: negative zero, subnormals, the
+// extremes, values with 17 significant digits, and uniform random ones.
+Points tricky_points() {
+    Points p{{-0.0, 0.0},
+             {5e-324, -2.2250738585072014e-308},
+             {1.7976931348623157e308, -1.7976931348623157e308},
+             {0.1, 17.300000000000001},
+             {24.00000000000005, 24.0000000000000517765},
+             {std::nextafter(0.5, 1.0), 1e22}};
+    std::mt19937_64 rng(42);
+    std::uniform_real_distribution<double> u(-1e3, 1e3);
+    for (int i = 0; i < 200; ++i) p.push_back({u(rng), u(rng)});
+    return p;
+}
+
+TEST(WritePoints, RoundTripIsBitExactInEveryFormat) {
+    const Points p = tricky_points();
+    for (PointFormat f : {PointFormat::xy, PointFormat::json, PointFormat::node, PointFormat::f64}) {
+        std::ostringstream out;
+        write_points(out, p, f);
+        std::istringstream in(out.str());
+        EXPECT_TRUE(same_bits(read_points(in, f), p)) << to_string(f);
+        std::ostringstream empty;
+        write_points(empty, {}, f);
+        EXPECT_TRUE(parse_points(empty.str(), f).empty()) << to_string(f);
+    }
+}
+
+TEST(WritePoints, TextFormatsRefuseNonFinite) {
+    const Points p{{0, std::numeric_limits<double>::infinity()}};
+    std::ostringstream out;
+    EXPECT_THROW(write_points(out, p, PointFormat::xy), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace exidel::io

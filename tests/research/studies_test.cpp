@@ -1,0 +1,357 @@
+// exidel::research: the studies measure what they claim, deterministically, and what
+// they write (PNG, report, fixtures) can be read back and reproduces.
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "exidel/research/studies.hpp"
+
+namespace exidel::research {
+namespace {
+
+namespace fs = std::filesystem;
+using delaunay::InCirclePolicy;
+
+// A fresh folder per test: ctest may run the tests of this file in parallel.
+fs::path work_dir(const std::string& name) {
+    const fs::path dir = fs::path(EXIDEL_RESEARCH_WORK) / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+std::string read_file(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+/// Every regular file below dir, by relative path, with its bytes.
+std::map<std::string, std::string> snapshot(const fs::path& dir) {
+    std::map<std::string, std::string> files;
+    for (const auto& e : fs::recursive_directory_iterator(dir)) {
+        if (e.is_regular_file()) files[fs::relative(e.path(), dir).string()] = read_file(e.path());
+    }
+    return files;
+}
+
+RunOptions quiet_run(const fs::path& out, unsigned jobs = 1) {
+    RunOptions run;
+    run.out = out;
+    run.jobs = jobs;
+    run.progress = false;
+    run.quick = true;
+    return run;
+}
+
+// --- failure maps ------------------------------------------------------------------
+
+TEST(FailureMap, Kettner1BreaksDoubleOnBothSidesOfTheLineAndNeverAdaptiveOrExact) {
+    const FailureMapSpec spec = failure_map_preset("kettner1");
+    const FailureMap dbl = compute_failure_map(spec, DoubleKernel{}, 2);
+    EXPECT_GT(dbl.wrong, 0u);
+    // The published picture: wrong signs on both sides of the line, not just on it.
+    std::uint64_t wrong_where_positive = 0, wrong_where_negative = 0;
+    for (std::size_t c = 0; c < dbl.signs.size(); ++c) {
+        if (dbl.signs[c] == dbl.exact[c]) continue;
+        wrong_where_positive += dbl.exact[c] == Sign::positive;
+        wrong_where_negative += dbl.exact[c] == Sign::negative;
+    }
+    EXPECT_GT(wrong_where_positive, 0u);
+    EXPECT_GT(wrong_where_negative, 0u);
+    EXPECT_EQ(dbl.exact_counts.zero, 256u);  // p on the line y = x: the diagonal cells
+
+    EXPECT_EQ(compute_failure_map(spec, AdaptiveKernel{}, 2).wrong, 0u);
+    EXPECT_EQ(compute_failure_map(spec, GmpExactKernel{}, 2).wrong, 0u);
+}
+
+TEST(FailureMap, EveryPresetIsExactWithTheAdaptiveKernel) {
+    for (FailureMapSpec spec : failure_map_presets()) {
+        spec.width = spec.height = 48;
+        const FailureMap m = compute_failure_map(spec, AdaptiveKernel{}, 2);
+        EXPECT_EQ(m.wrong, 0u) << spec.name;
+        EXPECT_EQ(m.signs.size(), 48u * 48u) << spec.name;
+    }
+}
+
+TEST(FailureMap, PivotOrderIsACyclicPermutationWithTheSameExactSigns) {
+    FailureMapSpec p = failure_map_preset("kettner1"), q = failure_map_preset("kettner1-pivot-q");
+    p.width = p.height = q.width = q.height = 32;
+    EXPECT_EQ(compute_failure_map(p, GmpExactKernel{}, 1).exact, compute_failure_map(q, GmpExactKernel{}, 1).exact);
+}
+
+TEST(FailureMap, RejectsBadSpecs) {
+    FailureMapSpec s = failure_map_preset("kettner1");
+    s.pivot = 3;
+    EXPECT_THROW(validate(s), std::invalid_argument);
+    s = failure_map_preset("kettner1");
+    s.order = {0, 0, 1};
+    EXPECT_THROW(validate(s), std::invalid_argument);
+    s = failure_map_preset("kettner1");
+    s.points.pop_back();
+    EXPECT_THROW(validate(s), std::invalid_argument);
+    EXPECT_THROW(failure_map_preset("no-such-preset"), std::invalid_argument);
+    EXPECT_THROW(parse_kernel("mpfr:1"), std::invalid_argument);
+    EXPECT_THROW(parse_kernel("float"), std::invalid_argument);
+    EXPECT_EQ(kernel_name(parse_kernel("mpfr:64")), "mpfr:64");
+}
+
+TEST(FailureMap, StudyWritesAValidPngAndAReportThatReferencesIt) {
+    const fs::path out = work_dir("failure_map_png");
+    FailureMapOptions o;
+    o.specs = {failure_map_preset("kettner1")};
+    o.kernels = {"double"};
+    o.width = o.height = 64;
+    const FailureMapStudy study = run_failure_map_study(o, quiet_run(out));
+    write_text_file(out / "report.md", study.report.render());
+    ASSERT_EQ(study.rows.size(), 1u);
+    const Image img = read_png(out / study.rows[0].png);
+    EXPECT_EQ(img.width, 3 * 64 * 2 + 2 * 8);
+    EXPECT_EQ(img.height, 64 * 2);
+    // The wrong cells of the double kernel are drawn in red in the third panel.
+    const Rgb red{215, 25, 28};
+    EXPECT_NE(std::find(img.pixels.begin(), img.pixels.end(), red), img.pixels.end());
+    const std::string report = read_file(out / "report.md");
+    EXPECT_NE(report.find("](" + study.rows[0].png + ")"), std::string::npos);
+    EXPECT_NE(report.find("failure_map.csv"), std::string::npos);
+    EXPECT_TRUE(fs::exists(out / "failure_map.csv"));
+    // Not a PNG: a clear error, not a crash.
+    EXPECT_THROW(read_png(out / "failure_map.csv"), std::runtime_error);
+}
+
+// --- determinism -------------------------------------------------------------------
+
+TEST(Determinism, EveryStudyWritesTheSameFilesForOneAndTwoJobs) {
+    const auto run_all = [](unsigned jobs) {
+        const fs::path out = work_dir("determinism_jobs" + std::to_string(jobs));
+        RunOptions run = quiet_run(out, jobs);
+        run.seed = 4242;
+        FailureMapOptions fm;
+        fm.specs = {failure_map_preset("kettner2"), failure_map_preset("cosine-s12")};
+        fm.kernels = {"double", "mpfr:60"};
+        fm.width = fm.height = 40;
+        run.out = out / "failure-map";
+        write_text_file(run.out / "report.md", run_failure_map_study(fm, run).report.render());
+        PrecisionOptions pr;
+        pr.families = {testing::Family::near_rounded_line, testing::Family::kettner};
+        pr.bits = {40, 53, 64, 120};
+        pr.samples = 600;
+        run.out = out / "precision";
+        write_text_file(run.out / "report.md", run_precision_study(pr, run).report.render());
+        TriangulationOptions tr;
+        tr.kernels = {"double", "adaptive"};
+        tr.families = {testing::Family::near_lattice_circle, testing::Family::uniform_scaled};
+        tr.seeds = 3;
+        tr.sizes = {30, 60};
+        run.out = out / "triangulation";
+        write_text_file(run.out / "report.md", run_triangulation_study(tr, run).report.render());
+        StagesOptions st;
+        st.families = {testing::Family::near_rounded_circle, testing::Family::integer_grid};
+        st.samples = 1500;
+        st.seeds = 2;
+        st.size = 80;
+        run.out = out / "stages";
+        write_text_file(run.out / "report.md", run_stages_study(st, run).report.render());
+        return snapshot(out);
+    };
+    const auto one = run_all(1), two = run_all(2);
+    ASSERT_EQ(one.size(), two.size());
+    for (const auto& [name, bytes] : one) {
+        ASSERT_TRUE(two.count(name)) << name;
+        EXPECT_EQ(bytes, two.at(name)) << name << " differs between --jobs 1 and --jobs 2";
+    }
+    EXPECT_TRUE(one.count("precision/precision.svg"));
+    EXPECT_NE(one.at("precision/report.md").find("](precision.svg)"), std::string::npos);
+}
+
+TEST(Determinism, AnotherSeedDrawsOtherInputs) {
+    PrecisionOptions pr;
+    pr.families = {testing::Family::near_rounded_line};
+    pr.bits = {53};
+    pr.samples = 300;
+    RunOptions a = quiet_run(work_dir("seed_a")), b = quiet_run(work_dir("seed_b"));
+    b.seed = a.seed + 1;
+    (void)run_precision_study(pr, a);
+    (void)run_precision_study(pr, b);
+    EXPECT_NE(read_file(a.out / "precision_thresholds.csv"), read_file(b.out / "precision_thresholds.csv"));
+}
+
+// --- precision ---------------------------------------------------------------------
+
+TEST(Precision, EnoughBitsMakeNoErrorAndDoublePrecisionDoes) {
+    PrecisionOptions pr;
+    pr.families = {testing::Family::kettner};
+    pr.bits = {53, 512};
+    pr.samples = 500;
+    const PrecisionStudy s = run_precision_study(pr, quiet_run(work_dir("precision_bounds")));
+    std::uint64_t wrong53 = 0;
+    for (const PrecisionCell& c : s.cells) {
+        // Kettner queries have b = 58 (proofs/bitcounts.md): 512 >= 8 b + 12 for every formulation.
+        if (c.bits == 512) {
+            EXPECT_EQ(c.wrong, 0u) << to_string(c.formulation);
+        }
+        if (c.bits == 53) wrong53 += c.wrong;
+        EXPECT_EQ(c.total, 500u);
+    }
+    EXPECT_GT(wrong53, 0u);
+}
+
+// --- triangulation -----------------------------------------------------------------
+
+int run_cli(const std::string& args) {
+#ifdef EXIDEL_CLI_PATH
+    const std::string cmd = std::string(EXIDEL_CLI_PATH) + " " + args + " >/dev/null 2>&1";
+    const int status = std::system(cmd.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+#else
+    (void)args;
+    return -2;
+#endif
+}
+
+TEST(Triangulation, ShrunkFixturesReplayTheirOutcome) {
+    const fs::path out = work_dir("triangulation_fixtures");
+    TriangulationOptions tr;
+    tr.kernels = {"double", "exact"};
+    tr.families = {testing::Family::uniform_scaled, testing::Family::near_lattice_circle};
+    tr.seeds = 4;
+    tr.sizes = {40, 80};
+    tr.shrink_per_class = 1;
+    const TriangulationStudy s = run_triangulation_study(tr, quiet_run(out));
+    for (const TriangulationRun& r : s.runs) {
+        if (r.kernel == "exact") {
+            EXPECT_EQ(r.result.outcome, Outcome::delaunay) << r.result.detail;
+        }
+    }
+    ASSERT_FALSE(s.fixtures.empty()) << "the double kernel found nothing to shrink";
+    bool saw_failure = false;
+    for (const Fixture& f : s.fixtures) {
+        EXPECT_LE(f.size, f.original_size);
+        const Classification again = replay_fixture(out / f.file, parse_kernel(f.kernel), f.policy);
+        EXPECT_EQ(again.outcome, f.result.outcome) << f.file;
+        EXPECT_EQ(again.detail, f.result.detail) << f.file;
+        EXPECT_EQ(replay_fixture(out / f.file, AdaptiveKernel{}, f.policy).outcome, Outcome::delaunay) << f.file;
+        if (f.result.outcome == Outcome::failure) {
+            saw_failure = true;
+            const std::string flags = " --kernel " + f.kernel + " --incircle " +
+                                      (f.policy == InCirclePolicy::cosine ? "cosine" : "determinant");
+#ifdef EXIDEL_CLI_PATH
+            EXPECT_EQ(run_cli("triangulate -i " + (out / f.file).string() + flags), 1) << f.file;
+            EXPECT_EQ(run_cli("triangulate -i " + (out / f.file).string() + " --kernel exact"), 0) << f.file;
+#endif
+        }
+    }
+    EXPECT_TRUE(saw_failure);
+}
+
+TEST(Triangulation, ShrinkingKeepsTheOutcomeAndRemovesEveryRemovablePoint) {
+    const fs::path file = fs::path(EXIDEL_RESEARCH_FIXTURES) / "double_overflow_no_visible_edge.xy";
+    const Kernel dbl = DoubleKernel{};
+    const Classification c = replay_fixture(file, dbl, InCirclePolicy::determinant);
+    ASSERT_EQ(c.outcome, Outcome::failure);
+    // Pad the fixture with harmless points; shrinking must find the fixture again.
+    std::ifstream in(file);
+    std::vector<Point2> points;
+    for (std::string line; std::getline(in, line);) {
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream s(line);
+        std::string x, y;
+        s >> x >> y;
+        points.push_back({std::strtod(x.c_str(), nullptr), std::strtod(y.c_str(), nullptr)});
+    }
+    ASSERT_EQ(points.size(), 4u);
+    std::vector<Point2> padded = points;
+    for (int i = 0; i < 12; ++i) padded.insert(padded.begin() + i, Point2{0x1p600 * i, -0x1p600 * i});
+    ASSERT_EQ(classify_triangulation(padded, dbl, InCirclePolicy::determinant).outcome, Outcome::failure);
+    const std::vector<Point2> shrunk = shrink_failing_input(padded, dbl, InCirclePolicy::determinant, c);
+    EXPECT_EQ(classify_triangulation(shrunk, dbl, InCirclePolicy::determinant).outcome, Outcome::failure);
+    EXPECT_LE(shrunk.size(), 4u);
+    for (std::size_t i = 0; i < shrunk.size(); ++i) {
+        std::vector<Point2> less = shrunk;
+        less.erase(less.begin() + std::ptrdiff_t(i));
+        EXPECT_NE(classify_triangulation(less, dbl, InCirclePolicy::determinant).outcome, Outcome::failure);
+    }
+}
+
+// Named regression fixtures: minimal failing inputs the triangulation study shrank
+// (seed 20250704, `exidel study triangulation --quick`).
+
+TEST(Regression, DoubleOverflowNoVisibleEdge) {
+    // Four points near 2^673: the double kernel's products overflow to infinity.
+    const fs::path file = fs::path(EXIDEL_RESEARCH_FIXTURES) / "double_overflow_no_visible_edge.xy";
+    const Classification c = replay_fixture(file, DoubleKernel{}, InCirclePolicy::determinant);
+    EXPECT_EQ(c.outcome, Outcome::failure);
+    EXPECT_EQ(c.detail, "no_visible_edge");
+    EXPECT_EQ(replay_fixture(file, AdaptiveKernel{}, InCirclePolicy::determinant).outcome, Outcome::delaunay);
+#ifdef EXIDEL_CLI_PATH
+    EXPECT_EQ(run_cli("triangulate -i " + file.string() + " --kernel double"), 1);
+    EXPECT_EQ(run_cli("triangulate -i " + file.string() + " --kernel adaptive"), 0);
+#endif
+}
+
+TEST(Regression, LongDoubleCosineKettnerNotCcw) {
+    // Kettner configuration 1 with p moved, and a fourth point on the diagonal: long
+    // double's wrong orientation leaves a clockwise triangle.
+    const fs::path file = fs::path(EXIDEL_RESEARCH_FIXTURES) / "long_double_cosine_kettner_not_ccw.xy";
+    const Classification c = replay_fixture(file, LongDoubleKernel{}, InCirclePolicy::cosine);
+    EXPECT_EQ(c.outcome, Outcome::invalid);
+    EXPECT_EQ(c.detail, "not_ccw");
+    EXPECT_EQ(replay_fixture(file, GmpExactKernel{}, InCirclePolicy::cosine).outcome, Outcome::delaunay);
+}
+
+TEST(Regression, Mpfr106CosineNearLineNotDelaunay) {
+    // 106 bits decide the degree-4 determinant here but not the cosine test's degree-8
+    // comparison: the precision study's "cosine needs about 120 bits" inside a triangulation.
+    const fs::path file = fs::path(EXIDEL_RESEARCH_FIXTURES) / "mpfr106_cosine_near_line_not_delaunay.xy";
+    EXPECT_EQ(replay_fixture(file, MpfrKernel(106), InCirclePolicy::cosine).outcome, Outcome::not_delaunay);
+    EXPECT_EQ(replay_fixture(file, MpfrKernel(106), InCirclePolicy::determinant).outcome, Outcome::delaunay);
+    EXPECT_EQ(replay_fixture(file, MpfrKernel(120), InCirclePolicy::cosine).outcome, Outcome::delaunay);
+}
+
+// --- stages ------------------------------------------------------------------------
+
+TEST(Stages, CountsEveryCallAndUniformInputStaysInTheFilter) {
+    StagesOptions st;
+    st.families = {testing::Family::uniform, testing::Family::near_rounded_line};
+    st.samples = 1000;
+    st.seeds = 1;
+    st.size = 100;
+    const StagesStudy s = run_stages_study(st, quiet_run(work_dir("stages")));
+    for (const StagesRow& r : s.rows) {
+        if (r.context != "stream") continue;
+        for (const auto& per : r.counts) {
+            std::uint64_t calls = 0;
+            for (std::uint64_t v : per) calls += v;
+            EXPECT_EQ(calls, 1000u);
+        }
+        const auto filter = std::size_t(AdaptiveStage::filter);
+        if (r.family == testing::Family::uniform) {
+            for (const auto& per : r.counts) EXPECT_EQ(per[filter], 1000u);
+        } else {
+            EXPECT_LT(r.counts[0][filter], 1000u);  // near-collinear: the filter often fails
+        }
+    }
+}
+
+TEST(Stages, CountingKernelAgreesWithTheAdaptiveKernel) {
+    const StageCountingKernel k;
+    const Point2 a{0.5, 0.5}, b{12, 12}, c{24, 24}, d{0.5, 0.75};
+    EXPECT_EQ(k.orient2d(a, b, c), AdaptiveKernel::orient2d(a, b, c));
+    EXPECT_EQ(k.incircle(a, b, d, c), AdaptiveKernel::incircle(a, b, d, c));
+    std::uint64_t total = 0;
+    for (const auto& per : k.counts) {
+        for (std::uint64_t v : per) total += v;
+    }
+    EXPECT_EQ(total, 2u);
+}
+
+}  // namespace
+}  // namespace exidel::research

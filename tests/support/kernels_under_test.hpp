@@ -1,0 +1,54 @@
+// exidel tests: the kernels that claim exactness, as one type list for typed tests
+// (STYLE.md item 8: one test body, every kernel).
+#pragma once
+
+#include <array>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "exidel/predicates/all.hpp"
+#include "exidel/testing/ulp.hpp"
+
+namespace exidel::test {
+
+/// MpfrKernel at exactly the precision FIELD_NOTES says makes each formula exact for
+/// this query: 2b+3 bits for orient2d, 4b+8 for incircle, 8b+12 for incircle_cosine,
+/// with b = 53 + the exponent spread of the query's own coordinates (grid_bits).
+/// Computing b per query, rather than one fixed worst case (8 * (53 + 2097) + 13 =
+/// 17213 bits covers every pair of finite doubles), tests the bound itself at its
+/// tightest: one bit fewer than claimed and a counterexample can exist.
+struct MpfrAtBound {
+    static constexpr bool is_exact = true;  // the claim under test
+    static std::string name() { return "mpfr-at-bound"; }
+    static Sign orient2d(Point2 a, Point2 b, Point2 c) {
+        const std::array q{a, b, c};
+        return MpfrKernel(testing::orient2d_bits(testing::grid_bits(q))).orient2d(a, b, c);
+    }
+    static Sign incircle(Point2 a, Point2 b, Point2 c, Point2 d) {
+        const std::array q{a, b, c, d};
+        return MpfrKernel(testing::incircle_bits(testing::grid_bits(q))).incircle(a, b, c, d);
+    }
+    static Sign incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d) {
+        const std::array q{a, b, c, d};
+        return MpfrKernel(testing::incircle_cosine_bits(testing::grid_bits(q)))
+            .incircle_cosine(a, b, c, d);
+    }
+};
+static_assert(PredicateKernel<MpfrAtBound>);
+
+using ExactKernels = ::testing::Types<GmpExactKernel, CppIntExactKernel, MpfrAtBound, AdaptiveKernel>;
+
+/// Names the typed-test instances after the kernel ("exact", "adaptive", ...).
+struct KernelName {
+    template <class K>
+    static std::string GetName(int) {
+        std::string n = K::name();
+        for (char& ch : n) {
+            if (ch == '-' || ch == ':') ch = '_';
+        }
+        return n;
+    }
+};
+
+}  // namespace exidel::test
