@@ -1,0 +1,19 @@
+# exidel_add_library(<name> <sources...>): the library exidel_<name> with alias
+# exidel::<name>, public headers in <dir>/include (installed under include/), C++20, and
+# the floating-point hygiene of every exidel translation unit: -ffp-contract=off (no product
+# and sum fused behind our back: FIELD_NOTES measured Dekker's split and Two-Product break,
+# and generated test inputs change) and -fno-fast-math (which also overrides a parent
+# project's global -ffast-math). PRIVATE: these never reach a consumer's compile lines.
+include_guard(GLOBAL)
+
+function(exidel_add_library name)
+  set(target exidel_${name})
+  add_library(${target} ${ARGN})
+  add_library(exidel::${name} ALIAS ${target})
+  target_include_directories(${target} PUBLIC
+    $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
+    $<INSTALL_INTERFACE:include>)
+  target_compile_features(${target} PUBLIC cxx_std_20)
+  target_compile_options(${target} PRIVATE -ffp-contract=off -fno-fast-math)
+  exidel_warnings(${target})
+endfunction()
