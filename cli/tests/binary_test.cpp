@@ -2,7 +2,6 @@
 // streaming contract, every kernel, and agreement of the exact kernels on a generated
 // near-degenerate file.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,44 +13,14 @@
 #include <string>
 #include <vector>
 
+#include "run_binary.hpp"
+
 namespace {
 
-struct RunResult {
-    int status = -1;
-    std::string out;
-    std::string err;
-};
+using namespace exidel::cli_test;
 
-std::string slurp(const std::string& path) {
-    std::ifstream f(path, std::ios::binary);
-    std::ostringstream ss;
-    ss << f.rdbuf();
-    return ss.str();
-}
-
-std::string work_path(const std::string& name) {
-    return std::string(EXIDEL_CLI_TEST_DIR) + "/" + name;
-}
-
-std::string write_file(const std::string& name, const std::string& content) {
-    const std::string path = work_path(name);
-    std::ofstream(path, std::ios::binary) << content;
-    return path;
-}
-
-// Runs the binary with `args` (already shell-quoted where needed) and stdin from `input`.
 RunResult run(const std::string& args, const std::string& input = "") {
-    static int counter = 0;
-    const std::string base = work_path("run" + std::to_string(counter++));
-    const std::string in = write_file("run" + std::to_string(counter - 1) + ".in", input);
-    const std::string command = std::string("'") + EXIDEL_CLI_PATH + "' " + args + " < '" + in +
-                                "' > '" + base + ".out' 2> '" + base + ".err'";
-    const int raw = std::system(command.c_str());
-    RunResult r;
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.out = slurp(base + ".out");
-    r.err = slurp(base + ".err");
-    return r;
+    return run_exidel("run", args, input);
 }
 
 const std::vector<std::string> all_kernels = {"double",  "long-double", "adaptive", "exact",

@@ -2,7 +2,6 @@
 // line numbers, no partial output, --stats, and the output certified in-process.
 #include <dirent.h>
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cmath>
 #include <cstdio>
@@ -17,36 +16,16 @@
 #include "exidel/delaunay/certify.hpp"
 #include "exidel/io/points.hpp"
 #include "exidel/io/triangulation.hpp"
+#include "run_binary.hpp"
 
 namespace {
 
 using exidel::Point2;
 namespace io = exidel::io;
 
-struct RunResult {
-    int status = -1;
-    std::string out;
-    std::string err;
-};
-
-std::string slurp(const std::string& path) {
-    std::ifstream f(path, std::ios::binary);
-    std::ostringstream ss;
-    ss << f.rdbuf();
-    return ss.str();
-}
+using namespace exidel::cli_test;
 
 bool exists(const std::string& path) { return std::ifstream(path).good(); }
-
-std::string work_path(const std::string& name) {
-    return std::string(EXIDEL_CLI_TEST_DIR) + "/" + name;
-}
-
-std::string write_file(const std::string& name, const std::string& content) {
-    const std::string path = work_path(name);
-    std::ofstream(path, std::ios::binary) << content;
-    return path;
-}
 
 std::string points_file(const std::string& name, const std::vector<Point2>& pts,
                         io::PointFormat f) {
@@ -57,18 +36,7 @@ std::string points_file(const std::string& name, const std::vector<Point2>& pts,
 
 // Runs `exidel triangulate ARGS` with stdin from `input`.
 RunResult run(const std::string& args, const std::string& input = "") {
-    static int counter = 0;
-    const std::string base = work_path("tri" + std::to_string(counter++));
-    write_file("tri" + std::to_string(counter - 1) + ".in", input);
-    const std::string command = std::string("'") + EXIDEL_CLI_PATH + "' triangulate " + args +
-                                " < '" + base + ".in' > '" + base + ".out' 2> '" + base +
-                                ".err'";
-    const int raw = std::system(command.c_str());
-    RunResult r;
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.out = slurp(base + ".out");
-    r.err = slurp(base + ".err");
-    return r;
+    return run_exidel("tri", "triangulate " + args, input);
 }
 
 // Files in the work directory whose name contains `part` (leftover temporaries).
