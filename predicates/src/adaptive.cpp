@@ -93,8 +93,7 @@ Sign product_pair_adapt(const ProductPair& t, double sum_abs, AdaptiveStage& sta
     double det = B[0] + B[1] + B[2] + B[3];
     double errbound = eb::ccw_b * sum_abs;
     stage = AdaptiveStage::stage_b;
-    if (det > errbound) return Sign::positive;
-    if (-det > errbound) return Sign::negative;
+    if (Sign s; filter_decides(det, errbound, s)) return s;
 
     const double p_tail = detail::two_diff_tail(t.p0, t.p1, p);
     const double q_tail = detail::two_diff_tail(t.q0, t.q1, q);
@@ -110,8 +109,7 @@ Sign product_pair_adapt(const ProductPair& t, double sum_abs, AdaptiveStage& sta
     const double correction_first = p * q_tail + q * p_tail;
     const double correction_second = r * s_tail + s * r_tail;
     det += Plus ? correction_first + correction_second : correction_first - correction_second;
-    if (det > errbound) return Sign::positive;
-    if (-det > errbound) return Sign::negative;
+    if (Sign s; filter_decides(det, errbound, s)) return s;
 
     stage = AdaptiveStage::exact;
     return product_pair_exact<Plus>(t).sign();
@@ -184,8 +182,7 @@ int incircle_of_rounded_differences(double adx, double ady, double bdx, double b
     double det = detail::expansion_estimate(fin_length, fin);
     double errbound = eb::icc_b * permanent;
     stage = AdaptiveStage::stage_b;
-    if (det > errbound) return Sign::positive;
-    if (-det > errbound) return Sign::negative;
+    if (Sign s; filter_decides(det, errbound, s)) return s;
 
     const double adxtail = detail::two_diff_tail(a.x, d.x, adx);
     const double adytail = detail::two_diff_tail(a.y, d.y, ady);
@@ -210,8 +207,7 @@ int incircle_of_rounded_differences(double adx, double ady, double bdx, double b
            ((cdx * cdx + cdy * cdy) *
                 ((adx * bdytail + bdy * adxtail) - (ady * bdxtail + bdx * adytail)) +
             2.0 * (cdx * cdxtail + cdy * cdytail) * (adx * bdy - ady * bdx));
-    if (det > errbound) return Sign::positive;
-    if (-det > errbound) return Sign::negative;
+    if (Sign s; filter_decides(det, errbound, s)) return s;
 
     stage = AdaptiveStage::exact;
     return detail::incircle_formula<Expansion>(a, b, c, d, lift_expansion);
@@ -272,8 +268,7 @@ Sign dot_sign_adapt(Point2 p, Point2 q, Point2 o, AdaptiveStage& stage) {
     const double dot = first + second;
     const double sum_abs = std::fabs(first) + std::fabs(second);
     const double errbound = eb::ccw_a * sum_abs + eb::underflow_orient;
-    if (dot > errbound) return Sign::positive;
-    if (-dot > errbound) return Sign::negative;
+    if (Sign s; filter_decides(dot, errbound, s)) return s;
     return product_pair_adapt<true>({p.x, o.x, q.x, o.x, p.y, o.y, q.y, o.y}, sum_abs, stage);
 }
 
