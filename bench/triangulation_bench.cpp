@@ -1,37 +1,70 @@
-// exidel triangulation benchmark: the external incremental algorithm (adaptive, double and
-// exact GMP kernels) against CGAL's Delaunay_triangulation_2<Epick> range insertion, in
-// one process, on the same points.
+// exidel triangulation benchmark: the external incremental algorithm with each
+// triangulation strategy, against CGAL's Delaunay_triangulation_2<Epick> range insertion,
+// in one process, on the same points.
 //
-// Names: tri/<input>/<n>/<implementation>; times are CPU time (the machine is shared, and
-// the run is single-threaded). Each iteration triangulates the whole input
-// (constructing and destroying the result; for CGAL, `insert(begin, end)`, which sorts
-// spatially inside). Counters, from one extra untimed run per benchmark:
-//   flips_per_pt  exidel: Counters::eroded_edges / n (an Instrumentation::counters run)
-//   bytes_per_pt  the peak of live heap bytes during the run minus those live before it,
+// Names: tri/<input>/<n>/<implementation>[/real_time], n the nominal size (grids have
+// s^2 points, s = round(sqrt(n)); the counter `n` is the actual count). Implementations:
+//   adaptive-<strategy>-t<threads>  exidel::delaunay::triangulate with AdaptiveKernel and
+//                                   Options{.strategy, .threads}; strategies
+//                                   lexicographic (the paper), radial, strips (t1, t2),
+//                                   automatic (the default; t1, t2)
+//   double-automatic-t1, exact-automatic-t1   the default strategy with DoubleKernel and
+//                                   GmpExactKernel (uniform only: the price of robustness)
+//   cgal-epick                      `CgalDelaunay dt; dt.insert(begin, end)` (spatial sort
+//                                   inside)
+// Times are wall-clock (UseRealTime) for every implementation, CGAL included: the strips
+// strategy runs worker threads, and CPU time of the benchmark thread would miss them. The
+// machine may be shared: compare ratios measured in one run only. Each iteration
+// triangulates the whole input (constructing and destroying the result). Counters, from
+// untimed runs once per benchmark (not per repetition):
+//   flips_per_pt  exidel: Counters::flips() / n (eroded edges plus edges deleted by strip
+//                 merges), from an Instrumentation::counters run with the same options
+//   strips        exidel: Result::strips, the pieces merged (1 unless strips ran); the
+//                 label names the strategy that ran (what `automatic` resolved to)
+//   bytes_per_pt  the peak of live heap bytes during one run minus those live before it,
 //                 over n. Counted by replacing global operator new/delete in this program
-//                 (malloc_usable_size of each block, so allocator rounding is included;
-//                 GMP's own malloc calls in the exact kernel are not seen). The input
-//                 vector exists before the run and is not counted.
+//                 with atomic counters (so worker threads are counted too), using
+//                 malloc_usable_size of each block, so allocator rounding is included.
+//                 Not seen: GMP's own malloc calls (exact kernel) and thread stacks. The
+//                 input vector exists before the run and is not counted.
+// The benchmark certifies nothing (tests/ does); it only checks Result::ok() and reports
+// a failure with SkipWithError.
 //
-// Inputs (points generated once per input and n, seeded):
+// Inputs (generated once per input and n, seeded; shuffled where the generator is ordered
+// so that no implementation profits from the order it is given):
 //   uniform        x, y uniform in [0, 1), 53 random bits each
 //   gaussian       x, y standard normal (std::normal_distribution, libstdc++)
-//   grid           s x s integer grid, s = round(sqrt(n)) (n = s^2 is reported)
+//   clustered      100 Gaussian clusters, centres uniform in [0, 1)^2, sigma 10^-3
+//   grid           s x s integer grid: every cell is four cocircular points
+//   rotated-grid   the s x s integer grid rotated by 30 degrees in doubles: nearly
+//                  cocircular and nearly collinear everywhere (the adaptive kernel's
+//                  exact stages)
 //   circle         (cos 2 pi i/n, sin 2 pi i/n): nearly cocircular after rounding
-//   parabola-asc   (x, x^2), x = -n .. -1: exidel sorts by x, so it inserts towards the
-//                  vertex, the paper's worst case: every insertion rebuilds the whole
-//                  triangulation, n/2 flips per point, quadratic time. Capped at 2^13.
-//   parabola-desc  (x, x^2), x = 1 .. n: inserted away from the vertex (the same curve in
-//                  the opposite order, mirrored): no flips.
-// The input order does not matter to exidel (it sorts) nor much to CGAL (it sorts along
-// a Hilbert curve after a random shuffle).
+//   parabola-asc   (x, x^2), x = -n .. -1: the lexicographic order inserts towards the
+//                  vertex, the paper's worst case (each insertion erodes the whole visible
+//                  chain, n/2 flips per point, quadratic time)
+//   parabola-desc  (x, x^2), x = 1 .. n: the same curve, inserted away from the vertex
 //
-// Sizes: n = 10^4, 10^5, 10^6; the exact kernel only at 10^4; grids 100^2 and 316^2, and
-// 1000^2 only with --exidel_slow (about s/2 = 500 flips per point: minutes per run);
-// 10^7 uniform only with --exidel_huge (several GB of memory).
+// Sizes (default run): n = 10^5 and 10^6 for every input and every strategy, except
+// where a strategy is quadratic:
+//   - lexicographic on parabola-asc: n/2 flips per point, run at n = 8192 only (1.3 s;
+//     10^5 would take minutes, 10^6 hours), never at 10^5 or 10^6;
+//   - lexicographic on the 1000 x 1000 grid: about s/2 = 500 flips per point, minutes
+//     per run, only with --exidel_slow;
+//   - radial on both parabolas at 10^6: few flips, but finding a visible hull edge from
+//     the angular hash costs thousands of orientations per point on a convex curve
+//     (about 3,000 at 10^5 and 12,000 at 2 x 10^5: 6 s and 40 s; 10^6 would take
+//     many minutes), only with --exidel_slow. Strips bound that walk by the strip size.
+// The kernel comparison (double, exact) runs on uniform only, exact at 10^4.
+// --exidel_huge adds 10^7 uniform (every strategy; several GB of memory).
+// Measured on the 2-core development machine under a load of 3-4 (another build
+// running): 16 minutes with --benchmark_repetitions=3, so well under 15 with the default
+// single repetition (the untimed runs and input generation are not repeated).
 //
-//   exidel_bench_triangulation --benchmark_repetitions=3 --benchmark_format=json
+//   exidel_bench_triangulation --benchmark_filter='/100000/'         # 10^5 only
+//   exidel_bench_triangulation --benchmark_filter='uniform/1000000/(adaptive-auto|cgal)'
 //   python3 bench/triangulation_table.py --run build/bench/exidel_bench_triangulation
+//       --repetitions 3 [--filter REGEX] [-- --exidel_slow --exidel_huge]   (one line)
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <benchmark/benchmark.h>
@@ -42,12 +75,15 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <map>
 #include <new>
 #include <numbers>
+#include <span>
 #include <random>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "exidel/delaunay/triangulate.hpp"
@@ -88,6 +124,7 @@ void operator delete[](void* p, std::size_t) noexcept { counted_free(p); }
 namespace {
 
 using namespace exidel;
+using delaunay::Strategy;
 using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
 using CgalDelaunay = CGAL::Delaunay_triangulation_2<Epick>;
 
@@ -105,45 +142,75 @@ struct Input {
     std::vector<Epick::Point_2> cgal;
 };
 
+// s x s grid points (i, j) mapped by `at`, shuffled.
+template <class At>
+std::vector<Point2> grid(std::size_t n, bench::Rng& rng, At at) {
+    const auto s = static_cast<std::size_t>(std::llround(std::sqrt(static_cast<double>(n))));
+    std::vector<Point2> p;
+    p.reserve(s * s);
+    for (std::size_t i = 0; i < s; ++i) {
+        for (std::size_t j = 0; j < s; ++j) p.push_back(at(static_cast<double>(i), static_cast<double>(j)));
+    }
+    std::shuffle(p.begin(), p.end(), rng);
+    return p;
+}
+
 std::vector<Point2> generate(const std::string& name, std::size_t n) {
     std::vector<Point2> p;
+    p.reserve(n);
     bench::Rng rng(20250101 + n);
     if (name == "uniform") {
         for (std::size_t i = 0; i < n; ++i) p.push_back({bench::unit(rng), bench::unit(rng)});
     } else if (name == "gaussian") {
         std::normal_distribution<double> g(0.0, 1.0);
         for (std::size_t i = 0; i < n; ++i) p.push_back({g(rng), g(rng)});
-    } else if (name == "grid") {
-        const auto s = static_cast<std::size_t>(std::llround(std::sqrt(static_cast<double>(n))));
-        for (std::size_t i = 0; i < s; ++i) {
-            for (std::size_t j = 0; j < s; ++j) {
-                p.push_back({static_cast<double>(i), static_cast<double>(j)});
-            }
+    } else if (name == "clustered") {
+        constexpr int clusters = 100;
+        std::vector<Point2> centre(clusters);
+        for (Point2& c : centre) c = {bench::unit(rng), bench::unit(rng)};
+        std::normal_distribution<double> g(0.0, 1e-3);
+        for (std::size_t i = 0; i < n; ++i) {
+            const Point2& c = centre[static_cast<std::size_t>(bench::integer(rng, 0, clusters - 1))];
+            p.push_back({c.x + g(rng), c.y + g(rng)});
         }
-        std::shuffle(p.begin(), p.end(), rng);
+    } else if (name == "grid") {
+        p = grid(n, rng, [](double i, double j) { return Point2{i, j}; });
+    } else if (name == "rotated-grid") {
+        const double c = std::cos(std::numbers::pi / 6), s = std::sin(std::numbers::pi / 6);
+        p = grid(n, rng, [=](double i, double j) { return Point2{i * c - j * s, i * s + j * c}; });
     } else if (name == "circle") {
         for (std::size_t i = 0; i < n; ++i) {
             const double t = 2 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(n);
             p.push_back({std::cos(t), std::sin(t)});
         }
+        std::shuffle(p.begin(), p.end(), rng);
     } else if (name == "parabola-asc" || name == "parabola-desc") {
         const bool asc = name == "parabola-asc";
         for (std::size_t i = 1; i <= n; ++i) {
             const double x = asc ? -static_cast<double>(i) : static_cast<double>(i);
-            p.push_back({x, x * x});  // exact: |x| <= 2^24
+            p.push_back({x, x * x});  // exact: |x| <= 2^26
         }
+        std::shuffle(p.begin(), p.end(), rng);
+    } else {
+        std::fprintf(stderr, "no input family '%s'\n", name.c_str());
+        std::abort();  // a registration typo in this file, not user input
     }
     return p;
 }
 
+// Benchmarks run in registration order, grouped by input: keeping only the latest input
+// bounds the memory of the process to one input (10^7 points with --exidel_huge).
 const Input& input(const std::string& name, std::size_t n) {
-    static std::map<std::pair<std::string, std::size_t>, Input> cache;
-    auto [it, fresh] = cache.try_emplace({name, n});
-    if (fresh) {
-        it->second.points = generate(name, n);
-        for (const Point2& q : it->second.points) it->second.cgal.emplace_back(q.x, q.y);
+    static std::pair<std::string, std::size_t> key;
+    static Input cached;
+    if (key != std::pair{name, n}) {
+        cached = {};
+        cached.points = generate(name, n);
+        cached.cgal.reserve(cached.points.size());
+        for (const Point2& q : cached.points) cached.cgal.emplace_back(q.x, q.y);
+        key = {name, n};
     }
-    return it->second;
+    return cached;
 }
 
 // Untimed statistics, computed once per benchmark name (Google Benchmark calls the
@@ -151,6 +218,8 @@ const Input& input(const std::string& name, std::size_t n) {
 struct Untimed {
     double flips_per_pt = -1;  // -1: not measured (CGAL)
     double bytes_per_pt = 0;
+    double strips = 0;
+    std::string ran;  // the strategy that ran
     std::string failure;
 };
 
@@ -165,27 +234,33 @@ const Untimed& untimed(const std::string& key, Compute compute) {
 void report(benchmark::State& state, std::size_t n, const Untimed& u) {
     state.counters["n"] = static_cast<double>(n);
     state.counters["bytes_per_pt"] = u.bytes_per_pt;
-    if (u.flips_per_pt >= 0) state.counters["flips_per_pt"] = u.flips_per_pt;
+    if (u.flips_per_pt >= 0) {
+        state.counters["flips_per_pt"] = u.flips_per_pt;
+        state.counters["strips"] = u.strips;
+        state.SetLabel(u.ran);
+    }
 }
 
 template <class K>
 void exidel_bench(benchmark::State& state, const std::string& name, const std::string& in_name,
-                  std::size_t n) {
+                  std::size_t n, delaunay::Options options) {
     const Input& in = input(in_name, n);
     const std::span<const Point2> pts(in.points);
     const std::size_t count = pts.size();
     const Untimed& u = untimed(name, [&] {
         Untimed r;
         const delaunay::Result counted =
-            delaunay::triangulate<delaunay::Instrumentation::counters>(pts, K{});
+            delaunay::triangulate<delaunay::Instrumentation::counters>(pts, K{}, options);
         if (!counted.ok()) {
             r.failure = counted.failure->message;
             return r;
         }
-        r.flips_per_pt = static_cast<double>(counted.counters.eroded_edges) /
-                         static_cast<double>(count);
+        r.flips_per_pt =
+            static_cast<double>(counted.counters.flips()) / static_cast<double>(count);
+        r.strips = static_cast<double>(counted.strips);
+        r.ran = std::string(delaunay::to_string(counted.strategy));
         r.bytes_per_pt = static_cast<double>(peak_extra_bytes([&] {
-                             benchmark::DoNotOptimize(delaunay::triangulate(pts, K{}));
+                             benchmark::DoNotOptimize(delaunay::triangulate(pts, K{}, options));
                          })) /
                          static_cast<double>(count);
         return r;
@@ -195,7 +270,11 @@ void exidel_bench(benchmark::State& state, const std::string& name, const std::s
         return;
     }
     for (auto _ : state) {
-        delaunay::Result r = delaunay::triangulate(pts, K{});
+        delaunay::Result r = delaunay::triangulate(pts, K{}, options);
+        if (!r.ok()) {
+            state.SkipWithError(("triangulation failed: " + r.failure->message).c_str());
+            break;
+        }
         benchmark::DoNotOptimize(r.triangulation.triangles.data());
     }
     report(state, count, u);
@@ -223,25 +302,38 @@ void cgal_bench(benchmark::State& state, const std::string& name, const std::str
     report(state, count, u);
 }
 
-void add(const std::string& in_name, std::size_t n, bool exact, bool dbl = true) {
+benchmark::internal::Benchmark* reg(const std::string& name, std::size_t n,
+                                    std::function<void(benchmark::State&)> fn) {
+    auto* b = benchmark::RegisterBenchmark(name.c_str(), std::move(fn));
+    b->Unit(benchmark::kMillisecond)->UseRealTime();
+    // From 10^6 points one run lasts long enough to be timed alone; Google Benchmark's
+    // default would run several to fill half a second. Repetitions give the spread.
+    if (n >= 1'000'000) b->Iterations(1);
+    return b;
+}
+
+template <class K>
+void add_exidel(const std::string& prefix, const std::string& kernel, const std::string& in_name,
+                std::size_t n, Strategy strategy, unsigned threads) {
+    const std::string name = prefix + kernel + "-" + std::string(delaunay::to_string(strategy)) +
+                             "-t" + std::to_string(threads);
+    const delaunay::Options options{.strategy = strategy, .threads = threads};
+    reg(name, n, [=](benchmark::State& s) { exidel_bench<K>(s, name, in_name, n, options); });
+}
+
+// Every adaptive strategy and CGAL on one input; lexicographic and radial only when asked
+// (each is quadratic on some inputs).
+void add(const std::string& in_name, std::size_t n, bool lexicographic, bool radial) {
     const std::string prefix = "tri/" + in_name + "/" + std::to_string(n) + "/";
-    const auto reg = [](const std::string& name, auto fn) {
-        benchmark::RegisterBenchmark(name.c_str(), fn)->Unit(benchmark::kMillisecond);
-    };
-    reg(prefix + "exidel-adaptive", [=](benchmark::State& s) {
-        exidel_bench<AdaptiveKernel>(s, prefix + "exidel-adaptive", in_name, n);
+    if (lexicographic) add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::lexicographic, 1);
+    if (radial) add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::radial, 1);
+    add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::strips, 1);
+    add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::strips, 2);
+    add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::automatic, 1);
+    add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::automatic, 2);
+    reg(prefix + "cgal-epick", n, [=](benchmark::State& s) {
+        cgal_bench(s, prefix + "cgal-epick", in_name, n);
     });
-    if (dbl) {
-        reg(prefix + "exidel-double", [=](benchmark::State& s) {
-            exidel_bench<DoubleKernel>(s, prefix + "exidel-double", in_name, n);
-        });
-    }
-    if (exact) {
-        reg(prefix + "exidel-exact", [=](benchmark::State& s) {
-            exidel_bench<GmpExactKernel>(s, prefix + "exidel-exact", in_name, n);
-        });
-    }
-    reg(prefix + "cgal-epick", [=](benchmark::State& s) { cgal_bench(s, prefix + "cgal-epick", in_name, n); });
 }
 
 }  // namespace
@@ -261,15 +353,35 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    for (const char* in : {"uniform", "gaussian", "circle", "parabola-desc"}) {
-        for (std::size_t n : {10'000u, 100'000u, 1'000'000u}) add(in, n, n == 10'000u);
+    // The price of robustness: the default strategy with the exact GMP kernel and with
+    // the plain double kernel (not robust), on uniform input.
+    {
+        const std::string prefix = "tri/uniform/10000/";
+        add_exidel<GmpExactKernel>(prefix, "exact", "uniform", 10'000, Strategy::automatic, 1);
+        add_exidel<AdaptiveKernel>(prefix, "adaptive", "uniform", 10'000, Strategy::automatic, 1);
+        add_exidel<DoubleKernel>(prefix, "double", "uniform", 10'000, Strategy::automatic, 1);
+        reg(prefix + "cgal-epick", 10'000, [=](benchmark::State& s) {
+            cgal_bench(s, prefix + "cgal-epick", "uniform", 10'000);
+        });
     }
-    add("grid", 100 * 100, true);
-    add("grid", 316 * 316, false);
-    if (slow) add("grid", 1000 * 1000, false, false);
-    for (std::size_t n : {1024u, 2048u, 4096u}) add("parabola-asc", n, n == 1024u);
-    add("parabola-asc", 8192, false, false);
-    if (huge) add("uniform", 10'000'000u, false, false);
+    for (const char* in : {"uniform", "gaussian", "clustered", "grid", "rotated-grid", "circle",
+                           "parabola-desc", "parabola-asc"}) {
+        const std::string_view name = in;
+        for (std::size_t n : {100'000u, 1'000'000u}) {
+            const bool big = n == 1'000'000;
+            const bool parabola = name == "parabola-asc" || name == "parabola-desc";
+            const bool lexicographic =
+                name != "parabola-asc" && (name != "grid" || !big || slow);
+            add(in, n, lexicographic, !(parabola && big) || slow);
+            if (name == "uniform") {
+                const std::string prefix = "tri/uniform/" + std::to_string(n) + "/";
+                add_exidel<DoubleKernel>(prefix, "double", in, n, Strategy::automatic, 1);
+            }
+        }
+    }
+    // The lexicographic order's worst case, small enough to run (n^2/8 flips).
+    add("parabola-asc", 8192, true, true);
+    if (huge) add("uniform", 10'000'000, true, true);
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
     return 0;

@@ -25,12 +25,15 @@ Studies (each writes report.md, CSVs and pictures into DIR and prints its main t
   precision      wrong-sign rate of MPFR at p bits vs the exact kernel, per
                  formulation and near-degenerate family; plot + threshold table
   triangulation  every kernel x in-circle policy x family: certified Delaunay, valid
-                 but not Delaunay, invalid, or failure; minimal failing fixtures
+                 but not Delaunay, invalid, or failure; minimal failing fixtures; and
+                 the work (flips, predicate calls) of each insertion order
   stages         which stage of the adaptive kernel decides, on query streams and
                  inside triangulations
   all            the four above into DIR/<study>/ and DIR/report.md
   replay         classify one point file as the triangulation study would:
                  exidel study replay -i FILE --kernel K [--incircle determinant|cosine]
+                                     [--order lexicographic|radial|strips]
+                 (default order lexicographic, the paper's; strips use 64-point strips)
 
 Common options:
   --out DIR       output folder (default: exidel-study/<study>, or exidel-study for all)
@@ -64,12 +67,17 @@ triangulation:
   --kernel LIST   (default double,long-double,mpfr:53,mpfr:106,adaptive,exact)
   --families LIST (default all)   --seeds N point sets per family (default 16; quick 4)
   --sizes LIST    point counts, cycled over seeds (default 50,100,200,500)
-  --shrink N      fixtures per kernel, policy and outcome (default 2)
+  --shrink N      fixtures per order, kernel, policy and outcome (default 2)
+  --order LIST    insertion orders of the outcome tables and fixtures, comma-separated:
+                  lexicographic|radial|strips, or 'all' (default lexicographic, the
+                  paper's algorithm; strips use 64-point strips so merges run). The
+                  "Work per insertion order" table always compares all three
 
 stages:
   --families LIST (default all)  --samples N queries per family and predicate
                   (default 10000; quick 2000)
-  --seeds N triangulations per family and policy (default 4; quick 2)
+  --seeds N triangulations per family and context (default 4; quick 2); contexts:
+                  lexicographic with each in-circle policy, radial with the determinant
   --size N        points per triangulation (default 1000; quick 200)
 
 Exit status: 0 success, 1 a study failed (I/O), 2 bad options.
@@ -267,6 +275,7 @@ int study_command(std::span<const std::string_view> args) {
             if (p.seeds) o.seeds = *p.seeds;
             if (p.sizes) o.sizes = parse_list(*p.sizes, "--sizes", 100000);
             if (p.shrink) o.shrink_per_class = *p.shrink;
+            if (p.order) o.orders = parse_orders(*p.order);
             std::cout << "triangulation: seed " << p.run.seed << ", output " << p.run.out.string() << '\n';
             const TriangulationStudy r = run_triangulation_study(o, p.run);
             write_text_file(p.run.out / "report.md", r.report.render());
@@ -288,7 +297,9 @@ int study_command(std::span<const std::string_view> args) {
             if (!p.input || !p.kernels) return usage_error("replay needs -i FILE and --kernel K");
             const Kernel k = research::parse_kernel(*p.kernels);
             const auto policy = parse_policy(p.incircle.value_or("determinant"));
-            const Classification c = replay_fixture(*p.input, k, policy);
+            const std::vector<delaunay::Strategy> orders = parse_orders(p.order.value_or("lexicographic"));
+            if (orders.size() != 1) return usage_error("replay runs one --order: lexicographic, radial or strips");
+            const Classification c = replay_fixture(*p.input, k, policy, orders.front());
             std::cout << to_string(c.outcome) << (c.detail.empty() ? "" : " (" + c.detail + ")") << '\n';
         } else {
             return usage_error("unknown study '" + p.study + "'");

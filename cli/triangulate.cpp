@@ -7,6 +7,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -15,6 +17,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <thread>
 
 #include "commands.hpp"
 #include "exidel/delaunay/triangulate.hpp"
@@ -29,10 +32,20 @@ constexpr std::string_view triangulate_help =
     R"(usage: exidel triangulate [-i FILE] [-o FILE] [--kernel NAME]
                           [--incircle determinant|cosine] [--format json|ele|off|svg]
                           [--input-format xy|json|node|f64] [--stats]
+                          [--order auto|lexicographic|radial|strips] [--threads N]
+                          [--strip-points N]
 
 Computes the Delaunay triangulation of a set of points with the external incremental
-algorithm (Cai 2025): points sorted by x then y, each one added outside the hull of
-the previous ones.
+algorithm (Cai 2025): each point is added outside the hull of the previous ones, so no
+point location is needed. The order of insertion (--order):
+  lexicographic  the paper's: by x then y. The reference; quadratic on a sampled convex
+                 curve inserted towards its vertex
+  radial         by exact distance from a centre (ties by x then y)
+  strips         vertical strips of --strip-points points, each radial, merged by the
+                 Guibas-Stolfi zipper, on --threads threads
+  auto           (default) radial below 32768 points, strips from there
+Every order gives a Delaunay triangulation with an exact kernel, and the same one when
+no four points are cocircular; the thread count never changes the output.
 
 Input (-i FILE, or standard input when no file or '-' is given). The format is
 --input-format, else the file's extension (.json json, .node node, .f64 f64),
@@ -66,10 +79,18 @@ Options:
                           (default: adaptive). adaptive, exact and exact-cpp give the
                           Delaunay triangulation of every finite input; the others may
                           give a wrong one or fail
-      --incircle POLICY   determinant (default) or cosine (the paper's Section 5 test)
+      --incircle POLICY   determinant (default) or cosine (the paper's Section 5 test;
+                          used by the insertions, the strips' merges always use the
+                          determinant)
+      --order ORDER       auto|lexicographic|radial|strips (default auto)
+      --threads N         threads for --order strips/auto (default: the hardware's
+                          thread count)
+      --strip-points N    points per strip (default: chosen by input size); strips
+                          grow until their points are not all on one line
   -f, --format FORMAT     json|ele|off|svg
       --input-format FMT  xy|json|node|f64
       --stats             print one JSON object on standard error: sizes, kernel,
+                          "strategy" (the order that ran), "strips", "threads",
                           the algorithm's counters and "triangulate_ms" (the time of
                           the triangulation alone; reading and writing are in
                           "read_ms" and "write_ms"). Counters are collected only with
@@ -94,6 +115,9 @@ struct Options {
     std::optional<std::string> output;
     std::string kernel = "adaptive";
     delaunay::InCirclePolicy incircle = delaunay::InCirclePolicy::determinant;
+    delaunay::Strategy strategy = delaunay::Strategy::automatic;
+    unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+    std::size_t strip_points = 0;
     std::optional<io::TriangulationFormat> format;
     std::optional<io::PointFormat> input_format;
     bool stats = false;
@@ -144,15 +168,23 @@ void print_stats(std::ostream& err, std::size_t points, const delaunay::Result& 
       << ", \"duplicates\": " << t.duplicates.size() << ", \"triangles\": " << t.triangle_count()
       << ", \"hull_size\": " << t.hull.size()
       << ", \"collinear\": " << (t.collinear ? "true" : "false") << ", \"kernel\": \"" << kernel
-      << "\", \"incircle\": \"" << policy_name(o.incircle)
-      << "\", \"instrumentation\": \"counters\", \"counters\": {"
+      << "\", \"incircle\": \"" << policy_name(o.incircle) << "\", \"strategy\": \""
+      << delaunay::to_string(r.strategy) << "\", \"strips\": " << r.strips
+      << ", \"threads\": " << o.threads
+      << ", \"instrumentation\": \"counters\", \"counters\": {"
       << "\"seed_orientations\": " << c.seed_orientations
       << ", \"tangent_orientations\": " << c.tangent_orientations
       << ", \"incircle_tests\": " << c.incircle_tests << ", \"eroded_edges\": " << c.eroded_edges
       << ", \"triangles_created\": " << c.triangles_created
       << ", \"triangles_destroyed\": " << c.triangles_destroyed
       << ", \"theorem1_checks\": " << c.theorem1_checks
-      << ", \"theorem1_violations\": " << c.theorem1_violations << "}"
+      << ", \"theorem1_violations\": " << c.theorem1_violations
+      << ", \"visible_search_orientations\": " << c.visible_search_orientations
+      << ", \"merge_orientations\": " << c.merge_orientations
+      << ", \"merge_incircle_tests\": " << c.merge_incircle_tests
+      << ", \"merge_deleted_edges\": " << c.merge_deleted_edges
+      << ", \"merge_cross_edges\": " << c.merge_cross_edges << ", \"flips\": " << c.flips()
+      << "}"
       << ", \"read_ms\": " << read_ms << ", \"triangulate_ms\": " << triangulate_ms
       << ", \"write_ms\": " << write_ms << "}\n";
     err << s.str();
@@ -241,7 +273,7 @@ int run(const Options& o) {
 
     // Triangulate: the only timed step. Counters only when asked for, so a plain run is
     // the uninstrumented algorithm.
-    const delaunay::Options options{o.incircle};
+    const delaunay::Options options{o.incircle, o.strategy, o.threads, o.strip_points};
     delaunay::Result result;
     std::string kernel_name;
     double triangulate_ms = 0;
@@ -322,6 +354,35 @@ int triangulate_command(std::span<const std::string_view> args) {
                 o.incircle = delaunay::InCirclePolicy::cosine;
             } else if (!missing) {
                 return usage_error("--incircle takes determinant or cosine, got '" + value + "'");
+            }
+        } else if (option("", "--order")) {
+            if (value == "auto") {
+                o.strategy = delaunay::Strategy::automatic;
+            } else if (value == "lexicographic") {
+                o.strategy = delaunay::Strategy::lexicographic;
+            } else if (value == "radial") {
+                o.strategy = delaunay::Strategy::radial;
+            } else if (value == "strips") {
+                o.strategy = delaunay::Strategy::strips;
+            } else if (!missing) {
+                return usage_error("--order takes auto, lexicographic, radial or strips, got '" +
+                                   value + "'");
+            }
+        } else if (option("", "--threads") || option("", "--strip-points")) {
+            const bool threads = arg.starts_with("--threads");
+            std::size_t parsed = 0;
+            const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), parsed);
+            const std::size_t limit = threads ? 1024 : delaunay::detail::max_points;
+            if (!missing && (ec != std::errc{} || end != value.data() + value.size() ||
+                             parsed == 0 || parsed > limit)) {
+                return usage_error(std::string(threads ? "--threads" : "--strip-points") +
+                                   " takes a whole number from 1 to " + std::to_string(limit) +
+                                   ", got '" + value + "'");
+            }
+            if (threads) {
+                o.threads = static_cast<unsigned>(parsed);
+            } else {
+                o.strip_points = parsed;
             }
         } else if (option("-f", "--format")) {
             o.format = io::triangulation_format_from_name(value);

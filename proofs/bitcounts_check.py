@@ -80,8 +80,17 @@ def cosine(ev, a, b, c, d):
     return -e
 
 
+def distance(ev, c, p, q):
+    pcx, pcy = ev.sub(p[0], c[0]), ev.sub(p[1], c[1])
+    qcx, qcy = ev.sub(q[0], c[0]), ev.sub(q[1], c[1])
+    plen = ev.add(ev.mul(pcx, pcx), ev.mul(pcy, pcy))
+    qlen = ev.add(ev.mul(qcx, qcx), ev.mul(qcy, qcy))
+    return sign(ev.sub(plen, qlen))
+
+
 BOUNDS = {  # bits, derived per intermediate in bitcounts.md
     "orient2d": (orient, 3, lambda b: 2 * b + 3),
+    "compare_distance": (distance, 3, lambda b: 2 * b + 3),
     "incircle": (incircle, 4, lambda b: 4 * b + 8),
     "incircle_cosine": (cosine, 4, lambda b: 8 * b + 12),
 }
@@ -104,7 +113,7 @@ def main():
         for b in (2, 3, 4):
             p_ok = bound(b)
             configs = list(configurations(npts, b, rng, 4000))
-            if name == "orient2d" and b == 2:  # exhaustive on the 7 x 7 grid
+            if name in ("orient2d", "compare_distance") and b == 2:  # exhaustive, 7 x 7 grid
                 grid = [(x, y) for x in range(-3, 4) for y in range(-3, 4)]
                 configs = [list(t) for t in itertools.product(grid, repeat=3)]
             bad_at_bound = 0

@@ -77,6 +77,37 @@ def main():
     u_orient = 2 * (1 + 2 * delta(3)) * eta + eta  # two products, the subtraction
     claims.append(("underflow_orient", "min", eta + u_orient * (1 + e) / (1 - e)))
 
+    # ---- compare_distance, stage A (bounds.md#compare-distance) ---------------------------
+    # One square: Gappa's rounded difference squared and the square's rounding; with the
+    # length's sum, four roundings per squared length.
+    square = run_gappa(gappa, "distance_term.g")
+    square_rel = (1 + magnitude(square, "P -/ Sx")) * (1 + magnitude(square, "S -/ P")) - 1
+    if square_rel > delta(3):
+        sys.exit(f"distance_term.g: Gappa's square error {float(square_rel)} exceeds (1+e)^3-1")
+    length_rel = max(delta(4), (1 + square_rel) * (1 + e) - 1)
+    # |D - Dx| <= e|D| + length_rel (lp + lq) + U, lp + lq <= (1+e) T: as for orient2d.
+    claims.append(("dist_a", "min", length_rel * (1 + e) ** 3 / (1 - e)))
+    # U: four squares may underflow (eta each, through (1+e)^2), and Gappa's weaker eta for
+    # the three sums (lp, lq, D), which are in fact exact when subnormal.
+    u_dist = 4 * (1 + e) ** 2 * eta + 3 * eta
+    claims.append(("underflow_dist", "min", eta + u_dist * (1 + e) / (1 - e)))
+
+    # ---- the radial key (bounds.md#radial-key) ---------------------------------------------
+    # Hypotheses of the derivation (checked against the code's limits): key in
+    # [2^-1000, 2^1022].
+    key_min, key_max = Q(2) ** -1000, Q(2) ** 1022
+    claims.append(("radial_key_min", "min", key_min))
+    claims.append(("radial_key_max", "max", key_max))
+    # key = (1 + c) sum (X_i^2 (1 + a_i)^2 (1 + b_i) + h_i): relative to the exact K,
+    # |key - K| <= length_rel K + h_key with h_key the two squares' and the sum's eta.
+    h_key = 2 * eta * (1 + e) + eta
+    k_low = (key_min - h_key) / (1 + e) ** 4  # the smallest K a key >= key_min allows
+    rel_to_exact = length_rel + h_key / k_low
+    # Relative to the key: K <= (key + h_key) / (1 - e)^4.
+    grow = length_rel / (1 - e) ** 4
+    rel_to_key = grow + h_key * (1 + grow) / key_min
+    claims.append(("radial_key_rel", "min", max(rel_to_exact, rel_to_key)))
+
     # ---- incircle, stage A (bounds.md#incircle) -----------------------------------------
     # Error of one term alift * (P1 - P2), relative to alift * (|P1| + |P2|):
     c_term = ((1 + delta(4)) * (e * (1 + e) + delta(3))  # the cross difference, scaled by alift
@@ -110,12 +141,57 @@ def main():
     # The bound is computed as fl(icc_static * fl(fl(M M) fl(M M))): three roundings down.
     claims.append(("icc_static", "min", total / (1 - e) ** 3))
 
-    # ---- stages B and C: first-order counts only (bounds.md#stages-b-and-c) ----------------
-    claims.append(("ccw_b", "min", delta(2)))  # two rounded differences per product
-    claims.append(("icc_b", "min", delta(4)))  # four per term (lift: 2, cross product: 2)
-    claims.append(("result_err", "min", delta(3)))  # estimate, correction, final sum
-    claims.append(("ccw_c", "min", 9 * e * e))  # Shewchuk's second-order count, see bounds.md
-    claims.append(("icc_c", "min", 44 * e * e))
+    # ---- stages B and C (bounds.md#expansion-estimate, bounds.md#stages-b-and-c) ----------
+    # Per-step lemma of the estimate (estimate_step.g): R1 for a sum of two doubles above
+    # 2^-1021, exact below (granular.g: a multiple of 2^-1074 of at most 53 bits is a double).
+    step = run_gappa(gappa, "estimate_step.g")
+    e_step = magnitude(step, "z -/ x")
+    gran = run_gappa(gappa, "granular.g")
+    if gran["z - x"] != (0, 0):
+        sys.exit("granular.g: Gappa did not prove that a granular 53-bit value rounds exactly")
+    if magnitude(gran, "float<53,-1074,ne>(v) - v") > eta:
+        sys.exit("granular.g: the subnormal rounding error exceeds eta")
+    if e_step > e:
+        sys.exit(f"estimate_step.g: the step error {float(e_step)} exceeds one rounding")
+
+    def estimate_rel(c, n):
+        """Lemma E: an n-component expansion whose partial sums satisfy
+        sum_{k>=2} |S_k| <= c |E| is estimated with |est - E| <= rho |E|, and then
+        |est - E| <= rho / (1 - rho) |est| (the form the filters use)."""
+        rho = e_step * c * (1 + e_step) ** (n - 2)
+        return rho / (1 - rho)
+
+    # c for the two classes of expansions the kernel estimates (bounds.md#expansion-estimate):
+    # nonadjacent (orient2d's Two_Two_Diff, 4 components): 1 + 4/3;
+    # strongly nonoverlapping (incircle's fin, at most 96 components): 1 + 33/7.
+    est_orient = estimate_rel(Q(7, 3), 4)
+    est_incircle = estimate_rel(Q(40, 7), 96)
+
+    # Lemma G (bounds.md#lemma-g-deciding-against-a-rounded-bound): |d| > fl(fl(y1) + fl(y2)) implies |d| > (y1 + y2) / g2.
+    g2 = (1 + e) ** 2 + e
+
+    # orient2d stage B: |B - Dx| <= (2e + e^2)(|pq| + |rs|) <= (2e + e^2)(1+e)^2 T; the
+    # estimate errs by est_orient |det|; lemma G: |det| > fl(ccw_b T) gives
+    # |det| > ccw_b T / (1+e).
+    claims.append(("ccw_b", "min", (2 * e + e * e) * (1 + e) ** 3 / (1 - est_orient)))
+    # orient2d stage C: dropped tail products e^2 (|pq| + |rs|); the correction's first-order
+    # terms sum to at most 2e (|pq| + |rs|) and carry two roundings each plus the
+    # difference's e (|c1| + |c2|); (1+e)^2 to T; lemma G (g2), the final addition's
+    # e |det_C| absorbed: g2 / (1-e).
+    tail_terms = ((delta(2) + e * (1 + e) ** 2) * 2 * e + e * e) * (1 + e) ** 2
+    claims.append(("ccw_c", "min", tail_terms * g2 / (1 - e)))
+    # result_err covers the estimate of stage B in both predicates' stage C.
+    claims.append(("result_err", "min",
+                   max(est_orient, est_incircle) * g2 / (1 - e)))
+    # incircle stage B: each of the 12 monomials of four differences errs by d_4 relative to
+    # its value in the rounded differences, whose sum of magnitudes is at most (1+e)^7
+    # times the computed permanent; lemma G one rounding; the estimate est_incircle |det|.
+    claims.append(("icc_b", "min", delta(4) * (1 + e) ** 8 / (1 - est_incircle)))
+    # incircle stage C, per row in units of lift * (|p1| + |p2|): dropped terms
+    # 6e^2 + 4e^3 + e^4; the correction's two products carry 2e and 2e of magnitude with
+    # 9 and 8 roundings; (1+e)^7 to the permanent; lemma G g2, absorbed e: 1/(1-e).
+    icc_tail = (6 * e ** 2 + 4 * e ** 3 + e ** 4) + 2 * e * delta(9) + 2 * e * delta(8)
+    claims.append(("icc_c", "min", icc_tail * (1 + e) ** 7 * g2 / (1 - e)))
 
     # ---- the cosine squared comparison (bounds.md#cosine) -------------------------------
     # Hypotheses of the derivation, themselves checked against the code: the filter is tried
@@ -139,7 +215,8 @@ def main():
 
     # ---- expansion range (bounds.md#expansion-range) -------------------------------------
     for script, name, degree, key in (("range_orient.g", "orient_max_log", 2, None),
-                                      ("range_incircle.g", "incircle_max_log", 4, "tree")):
+                                      ("range_incircle.g", "incircle_max_log", 4, "tree"),
+                                      ("range_distance.g", "distance_max_log", 2, None)):
         # (incircle_cosine's exact stage uses cpp_int, which has no range limit; its dot
         # products run the orient2d-shaped stages under orient_max_log.)
         goals = run_gappa(gappa, script)

@@ -3,6 +3,8 @@
 #include <dirent.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -90,7 +92,9 @@ TEST(ExidelTriangulate, HelpAndListing) {
 TEST(ExidelTriangulate, BadOptionsExitTwoWithUsage) {
     for (const char* args : {"--kernel", "--kernel fast", "--kernel=mpfr:1", "--incircle sine",
                              "--format png", "--input-format csv", "--frob", "a b", "-i a b",
-                             "-o", "-o a.json -o b.json"}) {
+                             "-o", "-o a.json -o b.json", "--order", "--order spiral",
+                             "--threads 0", "--threads two", "--threads=3x", "--strip-points 0",
+                             "--strip-points -5"}) {
         const RunResult r = run(args, "0 0\n1 0\n0 1\n");
         EXPECT_EQ(r.status, 2) << args;
         EXPECT_NE(r.err.find("usage: exidel triangulate"), std::string::npos) << args;
@@ -244,12 +248,18 @@ TEST(ExidelTriangulate, InexactKernelFailureExitsOneWithoutOutput) {
     const std::string in = write_file("kettner.txt", kettner);
     const std::string out = work_path("kettner.json");
     std::remove(out.c_str());
-    const RunResult r = run("-i " + in + " -o " + out + " --kernel double");
-    EXPECT_EQ(r.status, 1);
-    EXPECT_EQ(r.err.rfind("exidel: triangulation failed: ", 0), 0u) << r.err;
-    EXPECT_NE(r.err.find("no_visible_edge"), std::string::npos) << r.err;
-    EXPECT_FALSE(exists(out));
-    EXPECT_TRUE(files_containing(".tmp.").empty());
+    // The paper's order: the last point sees no hull edge. The default (radial) order
+    // meets the same wrong sign as a point that sees no edge of the hull at all.
+    for (const auto& [order, kind] : {std::pair{"lexicographic", "no_visible_edge"},
+                                      std::pair{"auto", "point_inside_hull"}}) {
+        const RunResult r =
+            run("-i " + in + " -o " + out + " --kernel double --order " + std::string(order));
+        EXPECT_EQ(r.status, 1);
+        EXPECT_EQ(r.err.rfind("exidel: triangulation failed: ", 0), 0u) << r.err;
+        EXPECT_NE(r.err.find(kind), std::string::npos) << r.err;
+        EXPECT_FALSE(exists(out));
+        EXPECT_TRUE(files_containing(".tmp.").empty());
+    }
     // The exact kernel triangulates it.
     const RunResult exact = run("-i " + in + " -o " + out);
     EXPECT_EQ(exact.status, 0) << exact.err;
@@ -339,11 +349,15 @@ TEST(ExidelTriangulate, StatsIsOneJsonObjectWithEveryKey) {
           "incircle", "instrumentation", "counters.seed_orientations",
           "counters.tangent_orientations", "counters.incircle_tests", "counters.eroded_edges",
           "counters.triangles_created", "counters.triangles_destroyed",
-          "counters.theorem1_checks", "counters.theorem1_violations", "read_ms",
-          "triangulate_ms", "write_ms"}) {
+          "counters.theorem1_checks", "counters.theorem1_violations",
+          "counters.visible_search_orientations", "counters.merge_orientations",
+          "counters.merge_incircle_tests", "counters.merge_deleted_edges",
+          "counters.merge_cross_edges", "counters.flips", "strategy", "strips", "threads",
+          "read_ms", "triangulate_ms", "write_ms"}) {
         EXPECT_TRUE(v.count(key)) << key << " missing in " << r.err;
     }
-    EXPECT_EQ(v.size(), 20u) << r.err;
+    EXPECT_EQ(v.size(), 29u) << r.err;
+    EXPECT_EQ(v.at("strategy"), "radial");  // auto, below 32768 points
     const auto tri = io::parse_triangulation_json(r.out);
     EXPECT_EQ(v.at("points"), "100");
     EXPECT_EQ(v.at("vertices"), "98");
@@ -361,6 +375,46 @@ TEST(ExidelTriangulate, StatsIsOneJsonObjectWithEveryKey) {
     EXPECT_GE(std::stod(v.at("triangulate_ms")), 0.0);
     // Without --stats nothing is printed on stderr.
     EXPECT_TRUE(run("-i " + in).err.empty());
+}
+
+// Every order gives the same triangulation of points in general position, and says in
+// --stats which one ran; the thread count never changes the output.
+TEST(ExidelTriangulate, OrdersAndThreadsGiveTheSameTriangles) {
+    const std::vector<Point2> pts = hundred_points();
+    const std::string in = points_file("orders.txt", pts, io::PointFormat::xy);
+    std::string reference;
+    for (const char* args : {"--order lexicographic", "--order radial",
+                             "--order strips --strip-points 7 --threads 1",
+                             "--order strips --strip-points 7 --threads 2", "--order auto"}) {
+        const RunResult r = run("-i " + in + " --stats " + args);
+        ASSERT_EQ(r.status, 0) << args << r.err;
+        const FlatJson stats(r.err);
+        const auto& v = stats.values;
+        const std::string all = args;
+        const std::size_t end = all.find(' ', 8);
+        const std::string order = all.substr(8, end == std::string::npos ? std::string::npos : end - 8);
+        EXPECT_EQ(v.at("strategy"), order == "auto" ? "radial" : order) << args;
+        if (order == "strips") {
+            EXPECT_GT(std::stoul(v.at("strips")), 1u) << args;
+        }
+        EXPECT_TRUE(certify_output(pts, r.out).ok()) << args;
+        const auto tri = io::parse_triangulation_json(r.out);
+        // Compare triangle sets: the arrays are in each order's own sequence.
+        std::vector<std::array<std::uint32_t, 3>> tris;
+        for (std::size_t t = 0; t < tri.triangle_count(); ++t) {
+            std::array<std::uint32_t, 3> x{tri.triangles[3 * t], tri.triangles[3 * t + 1],
+                                           tri.triangles[3 * t + 2]};
+            std::sort(x.begin(), x.end());
+            tris.push_back(x);
+        }
+        std::sort(tris.begin(), tris.end());
+        std::string text;
+        for (const auto& x : tris) {
+            text += std::to_string(x[0]) + "," + std::to_string(x[1]) + "," + std::to_string(x[2]) + ";";
+        }
+        if (reference.empty()) reference = text;
+        EXPECT_EQ(text, reference) << args;
+    }
 }
 
 }  // namespace

@@ -98,6 +98,12 @@ Sign ExactKernel<B>::incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d) {
     return detail::incircle_cosine_formula<Int>(a, b, c, d, AlignedLift<Int>{a, b, c, d});
 }
 
+template <ExactBackend B>
+Sign ExactKernel<B>::compare_distance(Point2 c, Point2 p, Point2 q) {
+    using Int = typename IntegerOf<B>::type;
+    return detail::compare_distance_formula<Int>(c, p, q, AlignedLift<Int>{c, p, q});
+}
+
 template struct ExactKernel<ExactBackend::gmp>;
 template struct ExactKernel<ExactBackend::cpp_int>;
 

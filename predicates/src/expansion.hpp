@@ -69,6 +69,36 @@ inline void two_two_sum(double a1, double a0, double b1, double b0, double x[4])
     two_sum(j, i, x[3], x[2]);
 }
 
+/// a + b for a four-component expansion a (a[0] smallest) and a double b: five
+/// components, exact, no branches (Shewchuk's Four_One_Sum; zeros are kept).
+inline void four_one_sum(const double a[4], double b, double x[5]) {
+    double carry = b;
+    for (int i = 0; i < 4; ++i) two_sum(a[i], carry, carry, x[i]);
+    x[4] = carry;
+}
+
+/// a + b for two four-component expansions: eight components, exact, no branches
+/// (Shewchuk's Four_Four_Sum: four rounds of Four_One_Sum). Zeros are kept; the sign is
+/// that of the largest nonzero component (sign_of_largest).
+inline void four_four_sum(const double a[4], const double b[4], double x[8]) {
+    double acc[8] = {a[0], a[1], a[2], a[3], 0, 0, 0, 0};
+    for (int j = 0; j < 4; ++j) {
+        double grown[5];
+        four_one_sum(acc + j, b[j], grown);
+        for (int i = 0; i < 5; ++i) acc[j + i] = grown[i];
+    }
+    for (int i = 0; i < 8; ++i) x[i] = acc[i];
+}
+
+/// Sign of a nonoverlapping expansion whose zero components were not eliminated.
+template <std::size_t N>
+Sign sign_of_largest(const double (&x)[N]) {
+    for (std::size_t i = N; i-- > 0;) {
+        if (x[i] != 0) return sign_of(x[i]);
+    }
+    return Sign::zero;
+}
+
 // ---- Fixed-size expansion arithmetic on raw arrays ---------------------------------------
 // For the adaptive stages, whose expansion lengths are bounded and known: no allocation,
 // the caller provides the output array (length at most elen + flen, resp. 2 elen).

@@ -33,6 +33,11 @@ Sign FloatingKernel<T>::incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d) 
     return detail::incircle_cosine_formula<T>(a, b, c, d, lift_to<T>);
 }
 
+template <class T>
+Sign FloatingKernel<T>::compare_distance(Point2 c, Point2 p, Point2 q) noexcept {
+    return detail::compare_distance_formula<T>(c, p, q, lift_to<T>);
+}
+
 template struct FloatingKernel<double>;
 template struct FloatingKernel<long double>;
 

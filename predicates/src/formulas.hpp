@@ -19,6 +19,18 @@ Sign orient2d_formula(Point2 a, Point2 b, Point2 c, Lift lift) {
     return sign_of(det);
 }
 
+/// |p - c|^2 - |q - c|^2: positive iff p is strictly farther from c than q. Both squared
+/// lengths are nonnegative, so the difference is no larger than either of them: it needs
+/// no more precision than the lengths themselves (proofs/bitcounts.md).
+template <class N, class Lift>
+Sign compare_distance_formula(Point2 c, Point2 p, Point2 q, Lift lift) {
+    const N cx = lift(c.x), cy = lift(c.y);
+    const N pcx = lift(p.x) - cx, pcy = lift(p.y) - cy;
+    const N qcx = lift(q.x) - cx, qcy = lift(q.y) - cy;
+    const N det = (pcx * pcx + pcy * pcy) - (qcx * qcx + qcy * qcy);
+    return sign_of(det);
+}
+
 /// Shewchuk's incircle determinant with d as the pivot:
 ///   | ax-dx  ay-dy  (ax-dx)^2 + (ay-dy)^2 |
 ///   | bx-dx  by-dy  (bx-dx)^2 + (by-dy)^2 |

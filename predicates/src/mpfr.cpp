@@ -90,6 +90,9 @@ Sign incircle_mpfr(Point2 a, Point2 b, Point2 c, Point2 d, mpfr_prec_t bits) {
 Sign incircle_cosine_mpfr(Point2 a, Point2 b, Point2 c, Point2 d, mpfr_prec_t bits) {
     return detail::incircle_cosine_formula<MpfrValue>(a, b, c, d, MpfrLift{bits});
 }
+Sign compare_distance_mpfr(Point2 c, Point2 p, Point2 q, mpfr_prec_t bits) {
+    return detail::compare_distance_formula<MpfrValue>(c, p, q, MpfrLift{bits});
+}
 }  // namespace
 
 Sign MpfrKernel::orient2d(Point2 a, Point2 b, Point2 c) const {
@@ -103,6 +106,10 @@ Sign MpfrKernel::incircle(Point2 a, Point2 b, Point2 c, Point2 d) const {
 Sign MpfrKernel::incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d) const {
     return detail::in_standard_environment<incircle_cosine_mpfr>(a, b, c, d,
                                                                  mpfr_prec_t{bits_});
+}
+
+Sign MpfrKernel::compare_distance(Point2 c, Point2 p, Point2 q) const {
+    return detail::in_standard_environment<compare_distance_mpfr>(c, p, q, mpfr_prec_t{bits_});
 }
 
 }  // namespace exidel

@@ -45,6 +45,11 @@ std::map<std::string, Rational> code_constants() {
         {"cos_rel_dot", Rational(b::cos_rel_dot)},
         {"cos_max_dot_rel", Rational(b::cos_max_dot_rel)},
         {"cos_min_factor", Rational(b::cos_min_factor)},
+        {"dist_a", Rational(b::dist_a)},
+        {"underflow_dist", Rational(b::underflow_dist)},
+        {"radial_key_rel", Rational(b::radial_key_rel)},
+        {"radial_key_min", Rational(b::radial_key_min)},
+        {"radial_key_max", Rational(b::radial_key_max)},
     };
 }
 

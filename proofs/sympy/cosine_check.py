@@ -82,7 +82,9 @@ claim(sp.expand(paper_det - incircle(a, b, c, d)) == 0,
 # ---- 2. degrees (expansion_safe's degree argument) ---------------------------------------
 u, v, left, right, _ = cosine_parts(a, b, c, d)
 for name, poly, want in (("orient2d", orient2d(a, b, c), 2), ("incircle", incircle(a, b, c, d), 4),
-                         ("cosine L", left, 8), ("cosine R", right, 8), ("u", u, 2)):
+                         ("cosine L", left, 8), ("cosine R", right, 8), ("u", u, 2),
+                         # compare_distance(c = a, p = b, q = c)
+                         ("compare_distance", dot(sub(b, a), sub(b, a)) - dot(sub(c, a), sub(c, a)), 2)):
     claim(sp.Poly(poly, *syms).total_degree() == want, f"{name} has total degree {want}")
 
 # ---- 3. boundary cases ---------------------------------------------------------------------

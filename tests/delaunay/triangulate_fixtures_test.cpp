@@ -15,9 +15,14 @@ namespace {
 using namespace exidel;
 using namespace exidel::delaunay;
 
+// These fixtures describe the paper's algorithm: its order is asked for explicitly
+// (the default strategy is automatic; strategies_test.cpp covers the others).
+constexpr Options paper{InCirclePolicy::determinant, Strategy::lexicographic};
+
 Result run_certified(const std::vector<Point2>& pts,
                      InCirclePolicy policy = InCirclePolicy::determinant) {
-    Result r = triangulate<Instrumentation::theorem1>(pts, AdaptiveKernel{}, Options{policy});
+    Result r = triangulate<Instrumentation::theorem1>(pts, AdaptiveKernel{},
+                                                      Options{policy, Strategy::lexicographic});
     EXPECT_TRUE(r.ok()) << (r.failure ? r.failure->message : "");
     const Certificate c = certify(pts, r.triangulation);
     EXPECT_TRUE(c.ok()) << c.summary();
@@ -132,7 +137,7 @@ TEST(DelaunayCounts, AscendingParabolaLeftBranchDestroysQuadraticallyMany) {
 // The certifier accepts what MpfrKernel produces at a generous precision.
 TEST(DelaunayKernels, MpfrKernelObjectIsAccepted) {
     const std::vector<Point2> pts{{0, 0}, {1, 0.1}, {0.3, 1}, {0.5, 0.5}, {2, 2}, {-1, 0.7}};
-    const Result r = triangulate(pts, MpfrKernel(400));
+    const Result r = triangulate(pts, MpfrKernel(400), paper);
     ASSERT_TRUE(r.ok());
     EXPECT_TRUE(certify(pts, r.triangulation).ok());
 }
@@ -151,7 +156,7 @@ std::vector<Point2> kettner_diagonal(int ulps_up) {
 TEST(DelaunayDoubleKernelRegression, KettnerOneUlpAboveIsWronglyCalledCollinear) {
     const auto pts = kettner_diagonal(1);
     EXPECT_FALSE(run_certified(pts).triangulation.collinear);
-    const Result r = triangulate(pts, DoubleKernel{});
+    const Result r = triangulate(pts, DoubleKernel{}, paper);
     ASSERT_TRUE(r.ok());
     EXPECT_TRUE(r.triangulation.collinear);
     const Certificate c = certify(pts, r.triangulation);
@@ -162,7 +167,7 @@ TEST(DelaunayDoubleKernelRegression, KettnerOneUlpAboveIsWronglyCalledCollinear)
 TEST(DelaunayDoubleKernelRegression, KettnerTwoUlpsAboveReportsNoVisibleEdge) {
     const auto pts = kettner_diagonal(2);
     run_certified(pts);
-    const Result r = triangulate(pts, DoubleKernel{});
+    const Result r = triangulate(pts, DoubleKernel{}, paper);
     ASSERT_FALSE(r.ok());
     EXPECT_EQ(r.failure->kind, FailureKind::no_visible_edge);
     EXPECT_EQ(r.failure->insertion, 3u);    // the fourth point in sorted order, (12, 12)

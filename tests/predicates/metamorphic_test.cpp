@@ -144,6 +144,23 @@ TYPED_TEST(Metamorphic, CosineSymmetries) {
     });
 }
 
+// compare_distance(c, p, q): antisymmetric in p, q; zero for p = q; never positive for
+// p = c; unchanged by the isometries that map doubles to doubles exactly (mirroring,
+// swapping the axes).
+TYPED_TEST(Metamorphic, DistanceSymmetries) {
+    for_every_family(TypeParam::name() + " compare_distance symmetries", [](testing::Family f) {
+        const auto [c, p, q] = *testing::gen_query3(f);
+        const TypeParam k{};
+        const Sign s = k.compare_distance(c, p, q);
+        RC_ASSERT(k.compare_distance(c, q, p) == -s);
+        RC_ASSERT(k.compare_distance(c, p, p) == Sign::zero);
+        RC_ASSERT(k.compare_distance(c, c, p) == (p == c ? Sign::zero : Sign::negative));
+        RC_ASSERT(k.compare_distance(mirrored(c), mirrored(p), mirrored(q)) == s);
+        const auto swapped = [](Point2 v) { return Point2{v.y, v.x}; };
+        RC_ASSERT(k.compare_distance(swapped(c), swapped(p), swapped(q)) == s);
+    });
+}
+
 TYPED_TEST(Metamorphic, ExactTranslation) {
     for_every_family(TypeParam::name() + " translation", [](testing::Family f) {
         const auto q = *testing::gen_query4(f);
@@ -155,6 +172,7 @@ TYPED_TEST(Metamorphic, ExactTranslation) {
         RC_ASSERT(k.orient2d(ta, tb, tc) == k.orient2d(a, b, c));
         RC_ASSERT(k.incircle(ta, tb, tc, td) == k.incircle(a, b, c, d));
         RC_ASSERT(k.incircle_cosine(ta, tb, tc, td) == k.incircle_cosine(a, b, c, d));
+        RC_ASSERT(k.compare_distance(ta, tb, tc) == k.compare_distance(a, b, c));
     });
 }
 
@@ -173,6 +191,7 @@ TYPED_TEST(Metamorphic, PowerOfTwoScaling) {
         RC_ASSERT(k.incircle(scale(a), scale(b), scale(c), scale(d)) == k.incircle(a, b, c, d));
         RC_ASSERT(k.incircle_cosine(scale(a), scale(b), scale(c), scale(d)) ==
                   k.incircle_cosine(a, b, c, d));
+        RC_ASSERT(k.compare_distance(scale(a), scale(b), scale(c)) == k.compare_distance(a, b, c));
     });
 }
 

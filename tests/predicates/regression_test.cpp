@@ -1,6 +1,8 @@
 // Named fixtures: hand-written edge cases, and every failure a property ever found.
 //
-// Property failures so far: none in the kernels. (The first runs of
+// Property failures so far: none in the kernels. (compare_distance's stage test once used
+// a wrong expansion-range limit: DistanceStages.TieAtTheLowerEdgeOfTheExpansionRange in
+// distance_test.cpp.) (The first runs of
 // CosineIsIncircleUnderPrecondition "gave up" because RC_PRE discarded degenerate
 // queries at small sizes; that was a test bug, fixed by asserting the implication.)
 // When a property fails, add its shrunk hex-float query here as TEST(Regression, <bug>).
@@ -14,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "cgal_oracle.hpp"
+#include "distance_queries.hpp"
 #include "exidel/testing/all.hpp"
 #include "kernels_under_test.hpp"
 
@@ -33,6 +36,14 @@ protected:
     static void incircle(Point2 a, Point2 b, Point2 c, Point2 d, std::optional<Sign> by_hand) {
         const Sign got = K::incircle(a, b, c, d);
         EXPECT_EQ(got, cgal_incircle(a, b, c, d));
+        if (by_hand) {
+            EXPECT_EQ(got, *by_hand);
+        }
+    }
+    static void distance(Point2 c, Point2 p, Point2 q, std::optional<Sign> by_hand) {
+        const Sign got = K::compare_distance(c, p, q);
+        EXPECT_EQ(got, cgal_compare_distance(c, p, q));
+        EXPECT_EQ(K::compare_distance(c, q, p), -got);
         if (by_hand) {
             EXPECT_EQ(got, *by_hand);
         }
@@ -119,6 +130,39 @@ TYPED_TEST(Regression, LastBitDifferences) {
     this->incircle({1, 0}, {0, 1}, {-1, 0}, {0, std::nextafter(-1.0, -2.0)}, neg);
     this->cosine({1, 0}, {-1, 0}, {0, 1}, {0, std::nextafter(-1.0, 0.0)}, pos);
     this->cosine({1, 0}, {-1, 0}, {0, 1}, {0, std::nextafter(-1.0, -2.0)}, neg);
+}
+
+// compare_distance: ties and one-ulp differences where the plain formula's squares
+// overflow, underflow, or round.
+TYPED_TEST(Regression, DistanceAtTheEdgesOfTheRange) {
+    const double h = 1e300, t = 1e-300;
+    this->distance({0, 0}, {h, 0}, {0, -h}, zero);       // squares overflow
+    this->distance({0, 0}, {h, 0}, {0, std::nextafter(-h, 0.0)}, pos);
+    this->distance({0, 0}, {t, 0}, {0, -t}, zero);       // squares underflow to 0
+    this->distance({0, 0}, {t, 0}, {0, std::nextafter(-t, 0.0)}, pos);
+    this->distance({0, 0}, {3 * tiny, 4 * tiny}, {5 * tiny, 0}, zero);  // subnormal 3-4-5
+    this->distance({0, 0}, {3 * tiny, 4 * tiny}, {4 * tiny, 4 * tiny}, neg);
+    this->distance({tiny, 0}, {0x1.fffffffffffffp+1023, 0}, {-0x1.fffffffffffffp+1023, 0},
+                   neg);  // c one subnormal to the right: p is closer
+}
+
+TYPED_TEST(Regression, DistanceLastBit) {
+    const double up = 1 + eps;
+    this->distance({0, 0}, {1, 0}, {0, 1}, zero);
+    this->distance({0, 0}, {up, 0}, {0, 1}, pos);
+    this->distance({0, 0}, {1, 0}, {0, std::nextafter(1.0, 0.0)}, pos);
+    // Differences that round: p - c = 1 - 2^-60 is not a double.
+    this->distance({0x1p-60, 0}, {1, 0}, {0, 1}, neg);
+    this->distance({0x1p-60, 0}, {1, 0}, {-1, 0}, neg);
+    this->distance({0x1p-60, 0x1p-60}, {1, 1}, {-1, -1}, neg);
+    // A tie whose squares are not doubles, then one ulp away.
+    const double big = 0x1p30 + 1;
+    this->distance({0, 0}, {big, 0}, {0, -big}, zero);
+    this->distance({0, 0}, {big, 0}, {0, std::nextafter(-big, 0.0)}, pos);
+    // Pythagorean ties far from the origin: (3, 4) and (5, 0) around c.
+    const Point2 c{0x1p40 + 7, -0x1p35 - 3};
+    this->distance(c, {c.x + 3, c.y + 4}, {c.x + 5, c.y}, zero);
+    this->distance(c, {c.x + 3, c.y + 4}, {c.x - 4, c.y - 3}, zero);
 }
 
 // Kettner et al.: configurations 1 and 3 are exactly on y = x; configuration 2 is not,

@@ -22,6 +22,7 @@
 #include <rapidcheck.h>
 
 #include "cgal_oracle.hpp"
+#include "distance_queries.hpp"
 #include "exidel/predicates/all.hpp"
 #include "exidel/testing/all.hpp"
 
@@ -78,17 +79,19 @@ TEST_P(WrongSignRate, MeasuredAgainstExactOracles) {
     const auto qc = sample(testing::gen_cosine_query(f.family));
 
     // The oracles once, then every kernel against them.
-    std::vector<Sign> o3, o4, oc;
+    std::vector<Sign> o3, o4, oc, od;
     for (const auto& [a, b, c] : q3) o3.push_back(cgal_orient2d(a, b, c));
+    for (const auto& [c, p, q] : q3) od.push_back(cgal_compare_distance(c, p, q));
     for (const auto& [a, b, c, d] : q4) o4.push_back(cgal_incircle(a, b, c, d));
     for (const auto& [a, b, c, d] : qc) oc.push_back(independent_cosine_sign(a, b, c, d));
 
     int double_wrong = 0;
     const auto measure = [&](const auto& kernel) {
-        Count w3, w4, wc;
+        Count w3, w4, wc, wd;
         for (int i = 0; i < sample_size; ++i) {
             const auto& [a, b, c] = q3[i];
             w3.add(kernel.orient2d(a, b, c) != o3[i], rounding_range({a, b, c}));
+            wd.add(kernel.compare_distance(a, b, c) != od[i], rounding_range({a, b, c}));
             const auto& [p, q, r, s] = q4[i];
             w4.add(kernel.incircle(p, q, r, s) != o4[i], rounding_range({p, q, r, s}));
             const auto& [e, g, h, k] = qc[i];
@@ -97,7 +100,8 @@ TEST_P(WrongSignRate, MeasuredAgainstExactOracles) {
         print(f.name, "orient2d", kernel.name(), w3);
         print(f.name, "incircle", kernel.name(), w4);
         print(f.name, "incircle_cosine", kernel.name(), wc);
-        return w3.wrong + w4.wrong + wc.wrong;
+        print(f.name, "compare_distance", kernel.name(), wd);
+        return w3.wrong + w4.wrong + wc.wrong + wd.wrong;
     };
     double_wrong = measure(DoubleKernel{});
     measure(LongDoubleKernel{});
@@ -106,6 +110,26 @@ TEST_P(WrongSignRate, MeasuredAgainstExactOracles) {
         EXPECT_GT(double_wrong, 0) << "the double kernel never failed on " << f.name
                                    << ": the family is not near-degenerate enough";
     }
+}
+
+// compare_distance on ties moved by a few ulps (distance_queries.hpp): the near-tie family
+// of the radial sort. The plain double formula fails there by overflow and underflow of
+// the squares at the extreme scales and by rounding inside [2^-100, 2^100] (at this seed:
+// 9976 and 4 of 20000); it must be seen failing, or the family is not near the ties.
+TEST(WrongSignRateDistance, NudgedTies) {
+    const auto queries = sample(gen_nudged_tie());
+    const auto measure = [&](const auto& kernel) {
+        Count w;
+        for (const auto& [c, p, q] : queries) {
+            w.add(kernel.compare_distance(c, p, q) != cgal_compare_distance(c, p, q),
+                  rounding_range({c, p, q}));
+        }
+        print("nudged_ties", "compare_distance", kernel.name(), w);
+        return w.wrong;
+    };
+    EXPECT_GT(measure(DoubleKernel{}), 0) << "the double kernel never failed on nudged ties";
+    measure(LongDoubleKernel{});
+    measure(MpfrKernel(53));
 }
 
 INSTANTIATE_TEST_SUITE_P(AllFamilies, WrongSignRate,

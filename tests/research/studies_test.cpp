@@ -2,6 +2,7 @@
 // they write (PNG, report, fixtures) can be read back and reproduces.
 #include <sys/wait.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -18,6 +19,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using delaunay::InCirclePolicy;
+using delaunay::Strategy;
 
 // A fresh folder per test: ctest may run the tests of this file in parallel.
 fs::path work_dir(const std::string& name) {
@@ -151,6 +153,7 @@ TEST(Determinism, EveryStudyWritesTheSameFilesForOneAndTwoJobs) {
         tr.families = {testing::Family::near_lattice_circle, testing::Family::uniform_scaled};
         tr.seeds = 3;
         tr.sizes = {30, 60};
+        tr.orders = parse_orders("all");  // fixture names and headers per order, and the work table
         run.out = out / "triangulation";
         write_text_file(run.out / "report.md", run_triangulation_study(tr, run).report.render());
         StagesOptions st;
@@ -169,6 +172,8 @@ TEST(Determinism, EveryStudyWritesTheSameFilesForOneAndTwoJobs) {
         EXPECT_EQ(bytes, two.at(name)) << name << " differs between --jobs 1 and --jobs 2";
     }
     EXPECT_TRUE(one.count("precision/precision.svg"));
+    EXPECT_TRUE(one.count("triangulation/triangulation_work.csv"));
+    EXPECT_NE(one.at("triangulation/report.md").find("## Work per insertion order"), std::string::npos);
     EXPECT_NE(one.at("precision/report.md").find("](precision.svg)"), std::string::npos);
 }
 
@@ -217,6 +222,31 @@ int run_cli(const std::string& args) {
 #endif
 }
 
+/// The standard output of `exidel ARGS` (empty when the binary was not built).
+std::string cli_output(const std::string& args) {
+    std::string out;
+#ifdef EXIDEL_CLI_PATH
+    const std::string cmd = std::string(EXIDEL_CLI_PATH) + " " + args + " 2>/dev/null";
+    FILE* pipe = popen(cmd.c_str(), "r");
+    if (!pipe) return out;
+    char buf[256];
+    while (std::fgets(buf, sizeof buf, pipe)) out += buf;
+    pclose(pipe);
+#else
+    (void)args;
+#endif
+    return out;
+}
+
+/// The text after `prefix` on the first line of `text` that starts with it ("" if none).
+std::string line_after(const std::string& text, const std::string& prefix) {
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) {
+        if (line.rfind(prefix, 0) == 0) return line.substr(prefix.size());
+    }
+    return "";
+}
+
 TEST(Triangulation, ShrunkFixturesReplayTheirOutcome) {
     const fs::path out = work_dir("triangulation_fixtures");
     TriangulationOptions tr;
@@ -225,31 +255,152 @@ TEST(Triangulation, ShrunkFixturesReplayTheirOutcome) {
     tr.seeds = 4;
     tr.sizes = {40, 80};
     tr.shrink_per_class = 1;
+    tr.orders = parse_orders("all");
     const TriangulationStudy s = run_triangulation_study(tr, quiet_run(out));
+    std::map<Strategy, std::size_t> runs_per_order;
     for (const TriangulationRun& r : s.runs) {
+        ++runs_per_order[r.order];
         if (r.kernel == "exact") {
             EXPECT_EQ(r.result.outcome, Outcome::delaunay) << r.result.detail;
         }
     }
+    for (Strategy o : all_orders) EXPECT_EQ(runs_per_order[o], 2u * 4u * 2u * 2u) << delaunay::to_string(o);
     ASSERT_FALSE(s.fixtures.empty()) << "the double kernel found nothing to shrink";
     bool saw_failure = false;
+    std::map<Strategy, std::size_t> fixtures_per_order;
     for (const Fixture& f : s.fixtures) {
+        ++fixtures_per_order[f.order];
         EXPECT_LE(f.size, f.original_size);
-        const Classification again = replay_fixture(out / f.file, parse_kernel(f.kernel), f.policy);
+        const Classification again = replay_fixture(out / f.file, parse_kernel(f.kernel), f.policy, f.order);
         EXPECT_EQ(again.outcome, f.result.outcome) << f.file;
         EXPECT_EQ(again.detail, f.result.detail) << f.file;
-        EXPECT_EQ(replay_fixture(out / f.file, AdaptiveKernel{}, f.policy).outcome, Outcome::delaunay) << f.file;
-        if (f.result.outcome == Outcome::failure) {
-            saw_failure = true;
-            const std::string flags = " --kernel " + f.kernel + " --incircle " +
-                                      (f.policy == InCirclePolicy::cosine ? "cosine" : "determinant");
+        EXPECT_EQ(replay_fixture(out / f.file, AdaptiveKernel{}, f.policy, f.order).outcome, Outcome::delaunay)
+            << f.file;
+        // The paper's order keeps the old names; the others say which order they need.
+        const std::string order_part = "-" + std::string(delaunay::to_string(f.order)) + "-";
+        EXPECT_EQ(f.file.find(order_part) != std::string::npos, f.order != Strategy::lexicographic) << f.file;
+        const std::string text = read_file(out / f.file);
+        const std::string replay = line_after(text, "# reproduce: exidel study replay -i FILE ");
+        const std::string triangulate = line_after(text, "#       and: exidel triangulate -i FILE ");
+        ASSERT_FALSE(replay.empty()) << f.file;
+        ASSERT_FALSE(triangulate.empty()) << f.file;
+        EXPECT_NE(triangulate.find("--order " + std::string(delaunay::to_string(f.order))), std::string::npos)
+            << f.file;
 #ifdef EXIDEL_CLI_PATH
-            EXPECT_EQ(run_cli("triangulate -i " + (out / f.file).string() + flags), 1) << f.file;
+        // The header's own command lines reproduce the outcome.
+        const std::string described = std::string(to_string(f.result.outcome)) +
+                                      (f.result.detail.empty() ? "" : " (" + f.result.detail + ")");
+        EXPECT_EQ(cli_output("study replay -i " + (out / f.file).string() + " " + replay), described + "\n")
+            << f.file << ": " << replay;
+        if (f.result.outcome == Outcome::failure) {
+            const std::string flags = triangulate.substr(0, triangulate.find("   ("));
+            EXPECT_EQ(run_cli("triangulate -i " + (out / f.file).string() + " " + flags), 1) << f.file;
             EXPECT_EQ(run_cli("triangulate -i " + (out / f.file).string() + " --kernel exact"), 0) << f.file;
-#endif
         }
+#endif
+        saw_failure = saw_failure || f.result.outcome == Outcome::failure;
     }
     EXPECT_TRUE(saw_failure);
+    for (Strategy o : all_orders) EXPECT_GT(fixtures_per_order[o], 0u) << delaunay::to_string(o);
+}
+
+TEST(Triangulation, WorkPerOrderHasOneRowPerFamilyAndOrderAndTheAdaptiveKernelCertifiesEveryOrder) {
+    const fs::path out = work_dir("triangulation_work");
+    TriangulationOptions tr;
+    tr.kernels = {"adaptive"};
+    tr.families = {testing::Family::uniform, testing::Family::wide_exponents, testing::Family::near_lattice_circle,
+                   testing::Family::duplicates};
+    tr.seeds = 2;
+    tr.sizes = {300};
+    const TriangulationStudy s = run_triangulation_study(tr, quiet_run(out));
+    // The outcome tables keep their default subject: the paper's order only.
+    for (const TriangulationRun& r : s.runs) EXPECT_EQ(r.order, Strategy::lexicographic);
+    ASSERT_EQ(s.work.size(), tr.families.size() * all_orders.size());
+    for (std::size_t i = 0; i < s.work.size(); ++i) {
+        const OrderWork& w = s.work[i];
+        const std::string where = std::string(testing::family_name(w.family)) + "/" +
+                                  std::string(delaunay::to_string(w.order));
+        EXPECT_EQ(w.family, tr.families[i / all_orders.size()]) << where;
+        EXPECT_EQ(w.order, all_orders[i % all_orders.size()]) << where;
+        EXPECT_EQ(w.sets, 2u) << where;
+        EXPECT_EQ(w.points, 600u) << where;
+        EXPECT_EQ(w.certified, w.sets) << where;
+        EXPECT_EQ(w.counters.flips(), w.counters.eroded_edges + w.counters.merge_deleted_edges) << where;
+        // Only strips merge, and only the radial sort (radial, and strips' radial strips)
+        // compares distances; 300 points in 64-point strips always merge.
+        if (w.order == Strategy::strips) {
+            EXPECT_GT(w.merges, 0u) << where;
+            EXPECT_GT(w.counters.merge_incircle_tests + w.counters.merge_orientations, 0u) << where;
+        } else {
+            EXPECT_EQ(w.merges, 0u) << where;
+            EXPECT_EQ(w.counters.merge_incircle_tests + w.counters.merge_orientations +
+                          w.counters.merge_deleted_edges + w.counters.merge_cross_edges,
+                      0u)
+                << where;
+        }
+        if (w.order == Strategy::lexicographic) {
+            EXPECT_EQ(w.distance_comparisons, 0u) << where;
+            EXPECT_EQ(w.counters.visible_search_orientations, 0u) << where;
+        }
+        EXPECT_GT(w.counters.incircle_tests, 0u) << where;
+    }
+    const std::string report = s.report.render();
+    EXPECT_NE(report.find("## Work per insertion order"), std::string::npos);
+    // triangulation_work.csv: a header, a row per family and order, and a total per order.
+    const std::string csv = read_file(out / "triangulation_work.csv");
+    std::istringstream lines(csv);
+    std::vector<std::string> rows;
+    for (std::string line; std::getline(lines, line);) rows.push_back(line);
+    ASSERT_EQ(rows.size(), 1 + s.work.size() + all_orders.size());
+    EXPECT_EQ(rows[0].rfind("family,order,point sets,points,flips/point", 0), 0u) << rows[0];
+    for (std::size_t i = 0; i < s.work.size(); ++i) {
+        const std::string prefix = std::string(testing::family_name(s.work[i].family)) + "," +
+                                   std::string(delaunay::to_string(s.work[i].order)) + ",2,600,";
+        EXPECT_EQ(rows[1 + i].rfind(prefix, 0), 0u) << rows[1 + i];
+        EXPECT_NE(rows[1 + i].find(",2/2"), std::string::npos) << rows[1 + i];
+        EXPECT_NE(report.find("| " + std::string(testing::family_name(s.work[i].family)) + " | " +
+                              std::string(delaunay::to_string(s.work[i].order)) + " | 2 | 600 |"),
+                  std::string::npos)
+            << rows[1 + i];
+    }
+    for (std::size_t o = 0; o < all_orders.size(); ++o) {
+        EXPECT_EQ(rows[1 + s.work.size() + o].rfind("all families," + std::string(delaunay::to_string(all_orders[o])) +
+                                                        ",8,2400,",
+                                                    0),
+                  0u)
+            << rows[1 + s.work.size() + o];
+    }
+}
+
+TEST(Triangulation, OrdersParseAndTheStudyRejectsAutomatic) {
+    EXPECT_EQ(parse_orders("all"), std::vector<Strategy>(all_orders.begin(), all_orders.end()));
+    EXPECT_EQ(parse_orders("radial,lexicographic,radial"),
+              (std::vector<Strategy>{Strategy::radial, Strategy::lexicographic}));
+    EXPECT_EQ(parse_orders("strips"), std::vector<Strategy>{Strategy::strips});
+    EXPECT_THROW(parse_orders(""), std::invalid_argument);
+    EXPECT_THROW(parse_orders("auto"), std::invalid_argument);
+    EXPECT_THROW(parse_orders("automatic"), std::invalid_argument);
+    EXPECT_THROW(parse_orders("radial,,strips"), std::invalid_argument);
+    TriangulationOptions tr;
+    tr.kernels = {"adaptive"};
+    tr.families = {testing::Family::uniform};
+    tr.seeds = 1;
+    tr.sizes = {10};
+    tr.orders = {Strategy::automatic};
+    EXPECT_THROW(run_triangulation_study(tr, quiet_run(work_dir("triangulation_automatic"))), std::invalid_argument);
+    const delaunay::Options o = study_options(InCirclePolicy::cosine, Strategy::strips);
+    EXPECT_EQ(o.incircle, InCirclePolicy::cosine);
+    EXPECT_EQ(o.strategy, Strategy::strips);
+    EXPECT_EQ(o.strip_points, study_strip_points);
+#ifdef EXIDEL_CLI_PATH
+    const std::string fixture =
+        (fs::path(EXIDEL_RESEARCH_FIXTURES) / "double_overflow_no_visible_edge.xy").string();
+    EXPECT_EQ(run_cli("study replay -i " + fixture + " --kernel double --order all"), 2);
+    EXPECT_EQ(run_cli("study replay -i " + fixture + " --kernel double --order auto"), 2);
+    EXPECT_EQ(run_cli("study triangulation --order sideways --out " +
+                      work_dir("triangulation_bad_order").string()),
+              2);
+#endif
 }
 
 TEST(Triangulation, ShrinkingKeepsTheOutcomeAndRemovesEveryRemovablePoint) {
@@ -292,8 +443,29 @@ TEST(Regression, DoubleOverflowNoVisibleEdge) {
     EXPECT_EQ(c.detail, "no_visible_edge");
     EXPECT_EQ(replay_fixture(file, AdaptiveKernel{}, InCirclePolicy::determinant).outcome, Outcome::delaunay);
 #ifdef EXIDEL_CLI_PATH
-    EXPECT_EQ(run_cli("triangulate -i " + file.string() + " --kernel double"), 1);
-    EXPECT_EQ(run_cli("triangulate -i " + file.string() + " --kernel adaptive"), 0);
+    EXPECT_EQ(run_cli("triangulate -i " + file.string() + " --kernel double --order lexicographic"), 1);
+    EXPECT_EQ(run_cli("triangulate -i " + file.string() + " --kernel adaptive --order lexicographic"), 0);
+#endif
+}
+
+TEST(Regression, DoubleOverflowRadialOrderFailsInsideTheHull) {
+    // The same four points in the radial order: the double kernel's overflowed answers
+    // now contradict the radial invariant (every new point outside the current hull)
+    // instead of the lexicographic one. The order option reaches the triangulation.
+    const fs::path file = fs::path(EXIDEL_RESEARCH_FIXTURES) / "double_overflow_no_visible_edge.xy";
+    for (Strategy order : {Strategy::radial, Strategy::strips}) {
+        const Classification c = replay_fixture(file, DoubleKernel{}, InCirclePolicy::determinant, order);
+        EXPECT_EQ(c.outcome, Outcome::failure) << delaunay::to_string(order);
+        EXPECT_EQ(c.detail, "point_inside_hull") << delaunay::to_string(order);
+        EXPECT_EQ(replay_fixture(file, AdaptiveKernel{}, InCirclePolicy::determinant, order).outcome,
+                  Outcome::delaunay);
+    }
+    EXPECT_EQ(replay_fixture(file, DoubleKernel{}, InCirclePolicy::determinant, Strategy::lexicographic).detail,
+              "no_visible_edge");
+#ifdef EXIDEL_CLI_PATH
+    EXPECT_EQ(cli_output("study replay -i " + file.string() + " --kernel double --order radial"),
+              "failure (point_inside_hull)\n");
+    EXPECT_EQ(cli_output("study replay -i " + file.string() + " --kernel double"), "failure (no_visible_edge)\n");
 #endif
 }
 
@@ -325,7 +497,15 @@ TEST(Stages, CountsEveryCallAndUniformInputStaysInTheFilter) {
     st.seeds = 1;
     st.size = 100;
     const StagesStudy s = run_stages_study(st, quiet_run(work_dir("stages")));
+    bool radial_compared = false;
     for (const StagesRow& r : s.rows) {
+        std::uint64_t distance_calls = 0;
+        for (std::uint64_t v : r.counts[compare_distance_row]) distance_calls += v;
+        // Only the radial order sorts by distance; the paper's order never does.
+        if (r.context == "triangulation/determinant" || r.context == "triangulation/cosine") {
+            EXPECT_EQ(distance_calls, 0u) << r.context;
+        }
+        if (r.context == "triangulation/radial") radial_compared = radial_compared || distance_calls > 0;
         if (r.context != "stream") continue;
         for (const auto& per : r.counts) {
             std::uint64_t calls = 0;
@@ -339,6 +519,8 @@ TEST(Stages, CountsEveryCallAndUniformInputStaysInTheFilter) {
             EXPECT_LT(r.counts[0][filter], 1000u);  // near-collinear: the filter often fails
         }
     }
+    EXPECT_TRUE(radial_compared);
+    EXPECT_NE(s.report.render().find("| triangulation/radial | compare_distance |"), std::string::npos);
 }
 
 TEST(Stages, CountingKernelAgreesWithTheAdaptiveKernel) {
@@ -346,11 +528,16 @@ TEST(Stages, CountingKernelAgreesWithTheAdaptiveKernel) {
     const Point2 a{0.5, 0.5}, b{12, 12}, c{24, 24}, d{0.5, 0.75};
     EXPECT_EQ(k.orient2d(a, b, c), AdaptiveKernel::orient2d(a, b, c));
     EXPECT_EQ(k.incircle(a, b, d, c), AdaptiveKernel::incircle(a, b, d, c));
+    EXPECT_EQ(k.compare_distance(a, b, c), AdaptiveKernel::compare_distance(a, b, c));
+    EXPECT_EQ(k.compare_distance(Point2{0, 0}, Point2{3, 4}, Point2{5, 0}), Sign::zero);
     std::uint64_t total = 0;
     for (const auto& per : k.counts) {
         for (std::uint64_t v : per) total += v;
     }
-    EXPECT_EQ(total, 2u);
+    EXPECT_EQ(total, 4u);
+    std::uint64_t distance_calls = 0;
+    for (std::uint64_t v : k.counts[compare_distance_row]) distance_calls += v;
+    EXPECT_EQ(distance_calls, 2u);
 }
 
 }  // namespace

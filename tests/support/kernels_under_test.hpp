@@ -34,6 +34,12 @@ struct MpfrAtBound {
         return MpfrKernel(testing::incircle_cosine_bits(testing::grid_bits(q)))
             .incircle_cosine(a, b, c, d);
     }
+    // Degree 2 like orient2d: 2b+3 bits (proofs/bitcounts.md).
+    static Sign compare_distance(Point2 c, Point2 p, Point2 q) {
+        const std::array pts{c, p, q};
+        return MpfrKernel(testing::orient2d_bits(testing::grid_bits(pts)))
+            .compare_distance(c, p, q);
+    }
 };
 static_assert(PredicateKernel<MpfrAtBound>);
 

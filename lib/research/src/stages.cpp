@@ -1,5 +1,7 @@
 // exidel::research: where the adaptive kernel decides. The share of calls decided by
-// each stage, per predicate and family, on raw query streams and inside triangulations.
+// each stage, per predicate and family, on raw query streams and inside triangulations
+// (the paper's lexicographic order with each in-circle policy, and the radial order,
+// whose sort is the only user of compare_distance).
 #include <map>
 
 #include "exidel/delaunay/triangulate.hpp"
@@ -28,13 +30,34 @@ Sign StageCountingKernel::incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d
     return s;
 }
 
+Sign StageCountingKernel::compare_distance(Point2 c, Point2 p, Point2 q) const {
+    AdaptiveStage stage{};
+    const Sign s = compare_distance_staged(c, p, q, stage);
+    ++counts[compare_distance_row][std::size_t(stage)];
+    return s;
+}
+
 namespace {
 
 constexpr std::uint64_t stages_study_id = 4;
 constexpr std::size_t queries_per_chunk = 1000;
 
 constexpr const char* stage_names[adaptive_stage_count] = {"filter", "stage_b", "stage_c", "exact", "gmp"};
-constexpr const char* contexts[] = {"stream", "triangulation/determinant", "triangulation/cosine"};
+constexpr const char* contexts[] = {"stream", "triangulation/determinant", "triangulation/cosine",
+                                     "triangulation/radial"};
+constexpr std::size_t context_count = std::size(contexts);
+
+/// The triangulations of a triangulation chunk, one per context after "stream".
+struct TriangulationContext {
+    delaunay::InCirclePolicy policy;
+    delaunay::Strategy order;
+};
+constexpr TriangulationContext triangulation_contexts[] = {
+    {delaunay::InCirclePolicy::determinant, delaunay::Strategy::lexicographic},
+    {delaunay::InCirclePolicy::cosine, delaunay::Strategy::lexicographic},
+    {delaunay::InCirclePolicy::determinant, delaunay::Strategy::radial},
+};
+static_assert(std::size(triangulation_contexts) + 1 == context_count);
 
 void add(StageCounts& into, const StageCounts& from) {
     for (std::size_t p = 0; p < into.size(); ++p) {
@@ -54,21 +77,21 @@ StagesStudy run_stages_study(const StagesOptions& options, const RunOptions& run
     const std::size_t size = options.size ? options.size : (run.quick ? 200 : 1000);
 
     // Chunks: query blocks per (family, predicate), then one chunk per (family, seed)
-    // triangulated with both policies.
+    // triangulated once per triangulation context.
     struct Chunk {
         testing::Family family;
-        int context;      // 0 stream, 1 triangulation (both policies)
-        Formulation formulation = Formulation::orient2d;  // stream only
+        int context;              // 0 stream, 1 triangulation (every triangulation context)
+        std::size_t predicate = 0;  // stream only: the row of StageCounts
         std::size_t index = 0;
-        StageCounts counts[2]{};  // stream: [0]; triangulation: per policy
+        StageCounts counts[context_count - 1]{};  // stream: [0]; triangulation: per context
     };
     std::vector<Chunk> chunks;
     const std::size_t blocks = (samples + queries_per_chunk - 1) / queries_per_chunk;
     for (testing::Family f : families) {
-        for (Formulation form : all_formulations) {
-            for (std::size_t b = 0; b < blocks; ++b) chunks.push_back({f, 0, form, b, {}});
+        for (std::size_t pred = 0; pred < stage_predicates.size(); ++pred) {
+            for (std::size_t b = 0; b < blocks; ++b) chunks.push_back({f, 0, pred, b, {}});
         }
-        for (std::size_t s = 0; s < seeds; ++s) chunks.push_back({f, 1, Formulation::orient2d, s, {}});
+        for (std::size_t s = 0; s < seeds; ++s) chunks.push_back({f, 1, 0, s, {}});
     }
     Progress progress("stages", chunks.size(), run.progress);
     for_each_chunk(chunks.size(), run.jobs, &progress, [&](std::size_t i) {
@@ -77,23 +100,34 @@ StagesStudy run_stages_study(const StagesOptions& options, const RunOptions& run
         if (c.context == 0) {
             const std::size_t count = std::min(queries_per_chunk, samples - c.index * queries_per_chunk);
             std::vector<std::array<Point2, 4>> queries(count);
+            // compare_distance(c, p, q) takes three points of the family, like orient2d;
+            // rows 0-2 are the Formulation values, so their streams keep their seeds.
+            const bool three_points = c.predicate == std::size_t(Formulation::orient2d) ||
+                                      c.predicate == compare_distance_row;
             {
                 const std::lock_guard lock(rapidcheck_mutex());
                 rc::Random random(derive_seed(run.seed, {stages_study_id, std::uint64_t(c.family), 0,
-                                                         std::uint64_t(c.formulation), c.index}));
+                                                         std::uint64_t(c.predicate), c.index}));
                 for (auto& q : queries) {
                     const rc::Random r = random.split();
-                    if (c.formulation == Formulation::orient2d) {
+                    if (three_points) {
                         const auto q3 = testing::gen_query3(c.family)(r).value();
                         std::copy(q3.begin(), q3.end(), q.begin());
-                    } else if (c.formulation == Formulation::incircle) {
+                    } else if (c.predicate == std::size_t(Formulation::incircle)) {
                         q = testing::gen_query4(c.family)(r).value();
                     } else {
                         q = testing::gen_cosine_query(c.family)(r).value();
                     }
                 }
             }
-            for (const auto& q : queries) evaluate(kernel, c.formulation, std::span(q.data(), arity(c.formulation)));
+            for (const auto& q : queries) {
+                if (c.predicate == compare_distance_row) {
+                    (void)kernel.compare_distance(q[0], q[1], q[2]);
+                } else {
+                    const auto f = Formulation(c.predicate);
+                    (void)evaluate(kernel, f, std::span(q.data(), arity(f)));
+                }
+            }
             c.counts[0] = kernel.counts;
         } else {
             std::vector<Point2> points;
@@ -102,11 +136,11 @@ StagesStudy run_stages_study(const StagesOptions& options, const RunOptions& run
                 const rc::Random random(derive_seed(run.seed, {stages_study_id, std::uint64_t(c.family), 1, c.index}));
                 points = testing::gen_points(c.family, size)(random).value();
             }
-            for (int p = 0; p < 2; ++p) {
+            for (std::size_t t = 0; t < std::size(triangulation_contexts); ++t) {
                 const StageCountingKernel counting;
-                const auto policy = p == 0 ? delaunay::InCirclePolicy::determinant : delaunay::InCirclePolicy::cosine;
-                (void)delaunay::triangulate(points, counting, delaunay::Options{policy});
-                c.counts[p] = counting.counts;
+                (void)delaunay::triangulate(points, counting, study_options(triangulation_contexts[t].policy,
+                                                                            triangulation_contexts[t].order));
+                c.counts[t] = counting.counts;
             }
         }
     });
@@ -118,25 +152,24 @@ StagesStudy run_stages_study(const StagesOptions& options, const RunOptions& run
         if (c.context == 0) {
             add(combined[{f, 0}], c.counts[0]);
         } else {
-            add(combined[{f, 1}], c.counts[0]);
-            add(combined[{f, 2}], c.counts[1]);
+            for (std::size_t t = 0; t + 1 < context_count; ++t) add(combined[{f, int(t + 1)}], c.counts[t]);
         }
     }
     study.table.header = {"family", "context", "predicate", "calls"};
     for (const char* s : stage_names) study.table.header.emplace_back(s);
-    StageCounts overall[3]{};
+    StageCounts overall[context_count]{};
     for (std::size_t f = 0; f < families.size(); ++f) {
-        for (int ctx = 0; ctx < 3; ++ctx) {
+        for (int ctx = 0; ctx < int(context_count); ++ctx) {
             const StageCounts& counts = combined[{f, ctx}];
             study.rows.push_back({families[f], contexts[ctx], counts});
             add(overall[ctx], counts);
-            for (Formulation form : all_formulations) {
-                const auto& per = counts[std::size_t(form)];
+            for (std::size_t pred = 0; pred < stage_predicates.size(); ++pred) {
+                const auto& per = counts[pred];
                 std::uint64_t calls = 0;
                 for (std::uint64_t v : per) calls += v;
                 if (calls == 0) continue;  // e.g. incircle_cosine in a determinant triangulation
                 std::vector<std::string> row{std::string(testing::family_name(families[f])), contexts[ctx],
-                                             std::string(to_string(form)), std::to_string(calls)};
+                                             std::string(stage_predicates[pred]), std::to_string(calls)};
                 for (std::uint64_t v : per) row.push_back(format_fraction(double(v) / double(calls)));
                 study.table.rows.push_back(std::move(row));
             }
@@ -145,13 +178,13 @@ StagesStudy run_stages_study(const StagesOptions& options, const RunOptions& run
     Table summary;
     summary.header = study.table.header;
     summary.header.erase(summary.header.begin());
-    for (int ctx = 0; ctx < 3; ++ctx) {
-        for (Formulation form : all_formulations) {
-            const auto& per = overall[ctx][std::size_t(form)];
+    for (std::size_t ctx = 0; ctx < context_count; ++ctx) {
+        for (std::size_t pred = 0; pred < stage_predicates.size(); ++pred) {
+            const auto& per = overall[ctx][pred];
             std::uint64_t calls = 0;
             for (std::uint64_t v : per) calls += v;
             if (calls == 0) continue;
-            std::vector<std::string> row{contexts[ctx], std::string(to_string(form)), std::to_string(calls)};
+            std::vector<std::string> row{contexts[ctx], std::string(stage_predicates[pred]), std::to_string(calls)};
             for (std::uint64_t v : per) row.push_back(format_fraction(double(v) / double(calls)));
             summary.rows.push_back(std::move(row));
         }
@@ -163,11 +196,16 @@ StagesStudy run_stages_study(const StagesOptions& options, const RunOptions& run
     study.report.paragraph(
         "Fraction of calls decided by each stage of the adaptive kernel (filter: the "
         "floating-point filter; stage_b: exact value of the rounded differences, or for "
-        "incircle_cosine the exact signs of the two dot products; stage_c: first-order tail "
+        "incircle_cosine the exact signs of the two dot products, and for compare_distance only "
+        "when its differences were exact, e.g. exact ties on grids; stage_c: first-order tail "
         "correction; exact: expansion arithmetic / cpp_int; gmp: magnitudes outside the "
-        "expansion range). 'stream': " + std::to_string(samples) + " queries per family and "
-        "predicate; 'triangulation/...': the calls made while triangulating " + std::to_string(seeds) +
-        " point sets of " + std::to_string(size) + " points per family with each in-circle policy. "
+        "expansion range). "
+        "'stream': " + std::to_string(samples) + " queries per family and "
+        "predicate (compare_distance(c, p, q) on three points of the family); 'triangulation/...': the "
+        "calls made while triangulating " + std::to_string(seeds) +
+        " point sets of " + std::to_string(size) + " points per family: in the paper's lexicographic "
+        "order with each in-circle policy (determinant, cosine), and in the radial order with the "
+        "determinant (radial: its sort is the only user of compare_distance). "
         "Seed " + std::to_string(run.seed) + ".");
     study.report.paragraph("All families together:");
     study.report.table(summary);

@@ -1,11 +1,14 @@
 // exidel::research: what wrong signs do to the triangulation. Every kernel and in-circle
-// policy on the same point sets; each outcome classified by the exact certifier; the
-// first wrong outcomes of each kind shrunk to minimal fixtures.
+// policy (and, on request, insertion order) on the same point sets; each outcome
+// classified by the exact certifier; the first wrong outcomes of each kind shrunk to
+// minimal fixtures. And what each insertion order costs with the adaptive kernel, so the
+// price of the paper's lexicographic order is on the page next to its outcomes.
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <tuple>
 
 #include "exidel/delaunay/certify.hpp"
 #include "exidel/delaunay/triangulate.hpp"
@@ -47,7 +50,12 @@ struct GuardedKernel {
         spend();
         return kernel.incircle_cosine(a, b, c, d);
     }
+    Sign compare_distance(Point2 c, Point2 p, Point2 q) const {
+        spend();
+        return kernel.compare_distance(c, p, q);
+    }
 };
+static_assert(PredicateKernel<GuardedKernel<DoubleKernel>>);
 
 std::string_view policy_name(delaunay::InCirclePolicy p) {
     return p == delaunay::InCirclePolicy::cosine ? "cosine" : "determinant";
@@ -57,6 +65,57 @@ constexpr delaunay::InCirclePolicy both_policies[] = {delaunay::InCirclePolicy::
                                                       delaunay::InCirclePolicy::cosine};
 
 bool is_wrong(Outcome o) { return o != Outcome::delaunay; }
+
+bool is_paper_order(delaunay::Strategy order) { return order == delaunay::Strategy::lexicographic; }
+
+/// The flags that make `exidel study replay` and `exidel triangulate` run `order` as the
+/// study did. replay's default is the paper's order, triangulate's is auto, so only the
+/// triangulate line always names it.
+std::string replay_order_flags(delaunay::Strategy order) {
+    return is_paper_order(order) ? "" : " --order " + std::string(delaunay::to_string(order));
+}
+std::string triangulate_order_flags(delaunay::Strategy order) {
+    std::string flags = " --order " + std::string(delaunay::to_string(order));
+    if (order == delaunay::Strategy::strips) flags += " --strip-points " + std::to_string(study_strip_points);
+    return flags;
+}
+
+/// value / points with two decimals ("-" for no points).
+std::string per_point(std::uint64_t value, std::size_t points) {
+    if (points == 0) return "-";
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.2f", double(value) / double(points));
+    return buf;
+}
+
+std::uint64_t orientations(const delaunay::Counters& c) {
+    return c.seed_orientations + c.tangent_orientations + c.visible_search_orientations +
+           c.merge_orientations;
+}
+std::uint64_t incircle_tests(const delaunay::Counters& c) { return c.incircle_tests + c.merge_incircle_tests; }
+
+/// One point set's work under one order (the work table's unit).
+struct WorkSample {
+    delaunay::Counters counters;
+    std::uint64_t distance_comparisons = 0;
+    std::size_t strips = 1;
+    bool certified = false;
+};
+
+/// Triangulates with the adaptive predicates, instrumented. StageCountingKernel is the
+/// adaptive kernel plus per-predicate call counts: the algorithm's Counters do not count
+/// the radial order's sort, the kernel does.
+WorkSample measure_work(std::span<const Point2> points, delaunay::Strategy order) {
+    const StageCountingKernel kernel;
+    const delaunay::Result r = delaunay::triangulate<delaunay::Instrumentation::counters>(
+        points, kernel, study_options(delaunay::InCirclePolicy::determinant, order));
+    WorkSample w;
+    w.counters = r.counters;
+    for (std::uint64_t v : kernel.counts[compare_distance_row]) w.distance_comparisons += v;
+    w.strips = r.strips;
+    w.certified = r.ok() && delaunay::certify(points, r.triangulation).ok();
+    return w;
+}
 
 std::string describe(const Classification& c) {
     return std::string(to_string(c.outcome)) + (c.detail.empty() ? "" : " (" + c.detail + ")");
@@ -75,11 +134,46 @@ std::string_view to_string(Outcome o) noexcept {
     return "?";
 }
 
+delaunay::Options study_options(delaunay::InCirclePolicy policy, delaunay::Strategy order) {
+    delaunay::Options options;
+    options.incircle = policy;
+    options.strategy = order;
+    options.threads = 1;
+    options.strip_points = study_strip_points;
+    return options;
+}
+
+std::vector<delaunay::Strategy> parse_orders(std::string_view list) {
+    std::vector<delaunay::Strategy> out;
+    const auto add = [&](delaunay::Strategy s) {
+        if (std::find(out.begin(), out.end(), s) == out.end()) out.push_back(s);
+    };
+    while (!list.empty()) {
+        const std::size_t comma = list.find(',');
+        const std::string_view name = list.substr(0, comma);
+        if (name == "all") {
+            for (delaunay::Strategy s : all_orders) add(s);
+        } else {
+            const auto* it = std::find_if(all_orders.begin(), all_orders.end(),
+                                          [&](delaunay::Strategy s) { return delaunay::to_string(s) == name; });
+            if (it == all_orders.end()) {
+                throw std::invalid_argument("unknown order '" + std::string(name) +
+                                            "' (expected lexicographic, radial, strips or all)");
+            }
+            add(*it);
+        }
+        list = comma == std::string_view::npos ? std::string_view{} : list.substr(comma + 1);
+    }
+    if (out.empty()) throw std::invalid_argument("empty order list");
+    return out;
+}
+
 Classification classify_triangulation(std::span<const Point2> points, const Kernel& kernel,
-                                      delaunay::InCirclePolicy policy, std::uint64_t call_budget) {
+                                      delaunay::InCirclePolicy policy, delaunay::Strategy order,
+                                      std::uint64_t call_budget) {
     const std::uint64_t n = points.size();
     const std::uint64_t budget = call_budget ? call_budget : 64 * n * n + 1'000'000;
-    const delaunay::Options options{policy};
+    const delaunay::Options options = study_options(policy, order);
     std::optional<delaunay::Result> result;
     try {
         result = std::visit(
@@ -103,9 +197,10 @@ Classification classify_triangulation(std::span<const Point2> points, const Kern
 }
 
 std::vector<Point2> shrink_failing_input(std::vector<Point2> points, const Kernel& kernel,
-                                         delaunay::InCirclePolicy policy, const Classification& target) {
+                                         delaunay::InCirclePolicy policy, const Classification& target,
+                                         delaunay::Strategy order) {
     const auto still_fails = [&](const std::vector<Point2>& candidate) {
-        const Classification c = classify_triangulation(candidate, kernel, policy);
+        const Classification c = classify_triangulation(candidate, kernel, policy, order);
         return c.outcome == target.outcome &&
                (target.outcome != Outcome::failure || c.detail == target.detail);
     };
@@ -153,11 +248,11 @@ std::string fixture_text(std::span<const Point2> points, std::span<const std::st
 }
 
 Classification replay_fixture(const std::filesystem::path& file, const Kernel& kernel,
-                              delaunay::InCirclePolicy policy) {
+                              delaunay::InCirclePolicy policy, delaunay::Strategy order) {
     std::ifstream in(file, std::ios::binary);
     if (!in) throw std::runtime_error("cannot open " + file.string());
     const std::vector<Point2> points = io::read_points(in, io::point_format_from_path(file.string()));
-    return classify_triangulation(points, kernel, policy);
+    return classify_triangulation(points, kernel, policy, order);
 }
 
 TriangulationStudy run_triangulation_study(const TriangulationOptions& options, const RunOptions& run) {
@@ -171,23 +266,34 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
     if (families.empty()) {
         for (const auto& info : testing::all_families()) families.push_back(info.family);
     }
+    const std::vector<delaunay::Strategy> orders =
+        options.orders.empty() ? std::vector<delaunay::Strategy>{delaunay::Strategy::lexicographic} : options.orders;
+    for (delaunay::Strategy o : orders) {
+        if (std::find(all_orders.begin(), all_orders.end(), o) == all_orders.end()) {
+            throw std::invalid_argument("the triangulation study runs lexicographic, radial or strips, not " +
+                                        std::string(delaunay::to_string(o)));
+        }
+    }
     const std::size_t seeds = options.seeds ? options.seeds : (run.quick ? 4 : 16);
     const std::vector<std::size_t> sizes =
         options.sizes.empty() ? std::vector<std::size_t>{50, 100, 200, 500} : options.sizes;
     for (std::size_t n : sizes) {
         if (n < 1 || n > 100000) throw std::invalid_argument("triangulation sizes must be in [1, 100000]");
     }
+    const std::size_t per_order = kernels.size() * std::size(both_policies);
 
-    // One chunk per (family, seed): one point set, every kernel and policy on it.
+    // One chunk per (family, seed): one point set, every order, kernel and policy on it
+    // (runs in that nesting), and the work of every order with the adaptive kernel.
     struct Chunk {
         testing::Family family;
         std::size_t seed_index;
         std::vector<Point2> points;
         std::vector<TriangulationRun> runs;
+        std::array<WorkSample, all_orders.size()> work{};
     };
     std::vector<Chunk> chunks;
     for (testing::Family f : families) {
-        for (std::size_t s = 0; s < seeds; ++s) chunks.push_back({f, s, {}, {}});
+        for (std::size_t s = 0; s < seeds; ++s) chunks.push_back({f, s, {}, {}, {}});
     }
     Progress progress("triangulation", chunks.size(), run.progress);
     for_each_chunk(chunks.size(), run.jobs, &progress, [&](std::size_t i) {
@@ -199,43 +305,48 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
                                                            c.seed_index}));
             c.points = testing::gen_points(c.family, n)(random).value();
         }
-        for (const Kernel& k : kernels) {
-            for (delaunay::InCirclePolicy p : both_policies) {
-                c.runs.push_back({c.family, c.seed_index, n, kernel_name(k), p,
-                                  classify_triangulation(c.points, k, p)});
+        for (delaunay::Strategy order : orders) {
+            for (const Kernel& k : kernels) {
+                for (delaunay::InCirclePolicy p : both_policies) {
+                    c.runs.push_back({c.family, c.seed_index, n, kernel_name(k), p,
+                                      classify_triangulation(c.points, k, p, order), order});
+                }
             }
         }
+        for (std::size_t o = 0; o < all_orders.size(); ++o) c.work[o] = measure_work(c.points, all_orders[o]);
     });
 
     TriangulationStudy study;
-    // Counts per (family, kernel, policy) and per (kernel, policy).
-    using Key = std::tuple<std::size_t, std::size_t, int>;  // family position, kernel position, policy
+    // Counts per (family, order, kernel, policy) and per (order, kernel, policy), by positions.
+    using Key = std::tuple<std::size_t, std::size_t, std::size_t, int>;
+    using Cell = std::tuple<std::size_t, std::size_t, int>;
     std::map<Key, std::array<std::uint64_t, all_outcomes.size()>> counts;
-    std::map<std::pair<std::size_t, int>, std::array<std::uint64_t, all_outcomes.size()>> totals;
-    std::map<std::pair<std::size_t, int>, std::map<std::string, std::uint64_t>> details;
+    std::map<Cell, std::array<std::uint64_t, all_outcomes.size()>> totals;
+    std::map<Cell, std::map<std::string, std::uint64_t>> details;
     struct Candidate {
         const Chunk* chunk;
         std::size_t kernel;
         TriangulationRun run;
     };
     std::vector<Candidate> to_shrink;
-    std::map<std::tuple<std::size_t, int, int>, std::size_t> shrink_count;
+    std::map<std::tuple<std::size_t, std::size_t, int, int>, std::size_t> shrink_count;
     for (std::size_t ci = 0; ci < chunks.size(); ++ci) {
         const Chunk& c = chunks[ci];
         const auto fpos = std::size_t(std::find(families.begin(), families.end(), c.family) - families.begin());
         for (std::size_t r = 0; r < c.runs.size(); ++r) {
             const TriangulationRun& tr = c.runs[r];
-            const std::size_t kpos = r / 2;
+            const std::size_t opos = r / per_order;
+            const std::size_t kpos = r % per_order / std::size(both_policies);
             const int pol = int(tr.policy);
             const auto o = std::size_t(tr.result.outcome);
-            ++counts[{fpos, kpos, pol}][o];
-            ++totals[{kpos, pol}][o];
+            ++counts[{fpos, opos, kpos, pol}][o];
+            ++totals[{opos, kpos, pol}][o];
             if (is_wrong(tr.result.outcome)) {
                 // Edge counts of not_delaunay outcomes would make one entry per run.
-                ++details[{kpos, pol}][tr.result.outcome == Outcome::not_delaunay
-                                           ? std::string(to_string(tr.result.outcome))
-                                           : describe(tr.result)];
-                std::size_t& taken = shrink_count[{kpos, pol, int(o)}];
+                ++details[{opos, kpos, pol}][tr.result.outcome == Outcome::not_delaunay
+                                                 ? std::string(to_string(tr.result.outcome))
+                                                 : describe(tr.result)];
+                std::size_t& taken = shrink_count[{opos, kpos, pol, int(o)}];
                 if (taken < options.shrink_per_class && tr.result.outcome != Outcome::guard) {
                     ++taken;
                     to_shrink.push_back({&c, kpos, tr});
@@ -245,38 +356,86 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
         }
     }
 
-    study.table.header = {"family", "kernel", "incircle"};
+    study.table.header = {"family", "order", "kernel", "incircle"};
     for (Outcome o : all_outcomes) study.table.header.emplace_back(to_string(o));
     for (std::size_t f = 0; f < families.size(); ++f) {
-        for (std::size_t k = 0; k < kernels.size(); ++k) {
-            for (delaunay::InCirclePolicy p : both_policies) {
-                const auto& row_counts = counts[{f, k, int(p)}];
-                std::vector<std::string> row{std::string(testing::family_name(families[f])),
-                                             kernel_name(kernels[k]), std::string(policy_name(p))};
-                for (std::uint64_t v : row_counts) row.push_back(std::to_string(v));
-                study.table.rows.push_back(std::move(row));
+        for (std::size_t op = 0; op < orders.size(); ++op) {
+            for (std::size_t k = 0; k < kernels.size(); ++k) {
+                for (delaunay::InCirclePolicy p : both_policies) {
+                    const auto& row_counts = counts[{f, op, k, int(p)}];
+                    std::vector<std::string> row{std::string(testing::family_name(families[f])),
+                                                 std::string(delaunay::to_string(orders[op])),
+                                                 kernel_name(kernels[k]), std::string(policy_name(p))};
+                    for (std::uint64_t v : row_counts) row.push_back(std::to_string(v));
+                    study.table.rows.push_back(std::move(row));
+                }
             }
         }
     }
     Table summary;
-    summary.header = {"kernel", "incircle", "runs"};
+    summary.header = {"order", "kernel", "incircle", "runs"};
     for (Outcome o : all_outcomes) summary.header.emplace_back(to_string(o));
     summary.header.emplace_back("wrong outcomes by kind");
-    for (std::size_t k = 0; k < kernels.size(); ++k) {
-        for (delaunay::InCirclePolicy p : both_policies) {
-            const auto& t = totals[{k, int(p)}];
-            std::uint64_t runs = 0;
-            for (std::uint64_t v : t) runs += v;
-            std::vector<std::string> row{kernel_name(kernels[k]), std::string(policy_name(p)), std::to_string(runs)};
-            for (std::uint64_t v : t) row.push_back(std::to_string(v));
-            std::string kinds;
-            for (const auto& [what, n] : details[{k, int(p)}]) {
-                kinds += (kinds.empty() ? "" : "; ") + what + ": " + std::to_string(n);
+    for (std::size_t op = 0; op < orders.size(); ++op) {
+        for (std::size_t k = 0; k < kernels.size(); ++k) {
+            for (delaunay::InCirclePolicy p : both_policies) {
+                const auto& t = totals[{op, k, int(p)}];
+                std::uint64_t runs = 0;
+                for (std::uint64_t v : t) runs += v;
+                std::vector<std::string> row{std::string(delaunay::to_string(orders[op])), kernel_name(kernels[k]),
+                                             std::string(policy_name(p)), std::to_string(runs)};
+                for (std::uint64_t v : t) row.push_back(std::to_string(v));
+                std::string kinds;
+                for (const auto& [what, n] : details[{op, k, int(p)}]) {
+                    kinds += (kinds.empty() ? "" : "; ") + what + ": " + std::to_string(n);
+                }
+                row.push_back(kinds.empty() ? "-" : kinds);
+                summary.rows.push_back(std::move(row));
             }
-            row.push_back(kinds.empty() ? "-" : kinds);
-            summary.rows.push_back(std::move(row));
         }
     }
+
+    // The work of each order, per family and over all families (chunk order: the sums
+    // do not depend on which thread measured what).
+    std::vector<OrderWork> overall;
+    for (delaunay::Strategy order : all_orders) overall.push_back({families.front(), order, 0, 0, {}, 0, 0, 0});
+    for (testing::Family f : families) {
+        for (std::size_t o = 0; o < all_orders.size(); ++o) {
+            OrderWork w{f, all_orders[o], 0, 0, {}, 0, 0, 0};
+            for (const Chunk& c : chunks) {
+                if (c.family != f) continue;
+                const WorkSample& s = c.work[o];
+                ++w.sets;
+                w.points += c.points.size();
+                w.counters += s.counters;
+                w.distance_comparisons += s.distance_comparisons;
+                w.merges += s.strips - 1;
+                w.certified += s.certified;
+            }
+            OrderWork& all = overall[o];
+            all.sets += w.sets;
+            all.points += w.points;
+            all.counters += w.counters;
+            all.distance_comparisons += w.distance_comparisons;
+            all.merges += w.merges;
+            all.certified += w.certified;
+            study.work.push_back(w);
+        }
+    }
+    Table work_table;
+    work_table.header = {"family", "order", "point sets", "points", "flips/point", "in-circle tests/point",
+                         "orientations/point", "distance comparisons/point", "merges", "certified"};
+    const auto work_row = [&](std::string family, const OrderWork& w) {
+        work_table.rows.push_back({std::move(family), std::string(delaunay::to_string(w.order)),
+                                   std::to_string(w.sets), std::to_string(w.points),
+                                   per_point(w.counters.flips(), w.points),
+                                   per_point(incircle_tests(w.counters), w.points),
+                                   per_point(orientations(w.counters), w.points),
+                                   per_point(w.distance_comparisons, w.points), std::to_string(w.merges),
+                                   std::to_string(w.certified) + "/" + std::to_string(w.sets)});
+    };
+    for (const OrderWork& w : study.work) work_row(std::string(testing::family_name(w.family)), w);
+    for (const OrderWork& w : overall) work_row("all families", w);
 
     // Shrink the chosen wrong outcomes (in parallel; each is a pure function of its input).
     std::vector<std::vector<Point2>> shrunk(to_shrink.size());
@@ -284,37 +443,42 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
         Progress shrink_progress("shrinking", to_shrink.size(), run.progress);
         for_each_chunk(to_shrink.size(), run.jobs, &shrink_progress, [&](std::size_t i) {
             const Candidate& c = to_shrink[i];
-            shrunk[i] = shrink_failing_input(c.chunk->points, kernels[c.kernel], c.run.policy, c.run.result);
+            shrunk[i] = shrink_failing_input(c.chunk->points, kernels[c.kernel], c.run.policy, c.run.result,
+                                             c.run.order);
         });
     }
     Table fixtures_table;
-    fixtures_table.header = {"fixture", "kernel", "incircle", "outcome", "points (original)", "replays"};
+    fixtures_table.header = {"fixture", "order", "kernel", "incircle", "outcome", "points (original)", "replays"};
     for (std::size_t i = 0; i < to_shrink.size(); ++i) {
         const Candidate& c = to_shrink[i];
         const Kernel& k = kernels[c.kernel];
         const std::string kname = kernel_name(k);
+        const std::string oname(delaunay::to_string(c.run.order));
+        // The paper's order keeps the names fixtures had before orders existed.
         const std::string file = "fixtures/" + std::string(to_string(c.run.result.outcome)) + "-" +
-                                 kernel_file_name(k) + "-" + std::string(policy_name(c.run.policy)) + "-" +
+                                 kernel_file_name(k) + "-" + std::string(policy_name(c.run.policy)) +
+                                 (is_paper_order(c.run.order) ? "" : "-" + oname) + "-" +
                                  std::string(testing::family_name(c.run.family)) + "-s" +
                                  std::to_string(c.run.seed_index) + ".xy";
         // The shrunk set's own classification (its detail may differ from the original's
         // for invalid and not_delaunay outcomes, which shrink by outcome only).
-        const Classification now = classify_triangulation(shrunk[i], k, c.run.policy);
+        const Classification now = classify_triangulation(shrunk[i], k, c.run.policy, c.run.order);
         const std::string cmd_flags = "--kernel " + kname + " --incircle " + std::string(policy_name(c.run.policy));
         const std::vector<std::string> header{
             "exidel study triangulation fixture: " + describe(now),
-            "kernel " + kname + ", incircle policy " + std::string(policy_name(c.run.policy)),
+            "kernel " + kname + ", incircle policy " + std::string(policy_name(c.run.policy)) + ", order " + oname,
             "family " + std::string(testing::family_name(c.run.family)) + ", seed index " +
                 std::to_string(c.run.seed_index) + " of study seed " + std::to_string(run.seed) + ", " +
                 std::to_string(c.chunk->points.size()) + " points shrunk to " + std::to_string(shrunk[i].size()),
-            "reproduce: exidel study replay -i FILE " + cmd_flags,
-            now.outcome == Outcome::failure
-                ? "      and: exidel triangulate -i FILE " + cmd_flags + "   (exit status 1: triangulation failed)"
-                : "      and: exidel triangulate -i FILE " + cmd_flags + "   (output differs from --kernel exact)",
+            "reproduce: exidel study replay -i FILE " + cmd_flags + replay_order_flags(c.run.order),
+            "      and: exidel triangulate -i FILE " + cmd_flags + triangulate_order_flags(c.run.order) +
+                (now.outcome == Outcome::failure ? "   (exit status 1: triangulation failed)"
+                                                 : "   (output differs from --kernel exact)"),
         };
         write_text_file(run.out / file, fixture_text(shrunk[i], header));
-        study.fixtures.push_back({file, kname, c.run.policy, now, c.chunk->points.size(), shrunk[i].size()});
-        fixtures_table.rows.push_back({"`" + file + "`", kname, std::string(policy_name(c.run.policy)),
+        study.fixtures.push_back({file, kname, c.run.policy, now, c.chunk->points.size(), shrunk[i].size(),
+                                  c.run.order});
+        fixtures_table.rows.push_back({"`" + file + "`", oname, kname, std::string(policy_name(c.run.policy)),
                                        describe(now),
                                        std::to_string(shrunk[i].size()) + " (" +
                                            std::to_string(c.chunk->points.size()) + ")",
@@ -323,14 +487,19 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
 
     write_text_file(run.out / "triangulation.csv", study.table.csv());
     write_text_file(run.out / "triangulation_summary.csv", summary.csv());
+    write_text_file(run.out / "triangulation_work.csv", work_table.csv());
 
     std::string sizes_text;
     for (std::size_t n : sizes) sizes_text += (sizes_text.empty() ? "" : ", ") + std::to_string(n);
+    std::string orders_text;
+    for (delaunay::Strategy o : orders) orders_text += (orders_text.empty() ? "" : ", ") + std::string(delaunay::to_string(o));
     study.report = Report("Triangulation outcomes per kernel and in-circle policy");
     study.report.paragraph(
         "Every family of lib/testing, " + std::to_string(seeds) + " point sets each (sizes " + sizes_text +
         ", cycled; seed " + std::to_string(run.seed) + "); every kernel and both in-circle "
-        "policies triangulate the same point sets. Outcomes, decided by the exact certifier: "
+        "policies triangulate the same point sets, in insertion order " + orders_text +
+        (orders.size() == 1 && is_paper_order(orders.front()) ? " (the paper's algorithm)" : "") +
+        ". Outcomes, decided by the exact certifier: "
         "**delaunay** (certified), **not_delaunay** (a valid triangulation with some edge not "
         "locally Delaunay), **invalid** (not a triangulation of the points; the certifier's first "
         "finding in the last column), **failure** (the algorithm detected the inconsistency and "
@@ -343,10 +512,23 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
     } else {
         study.report.table(fixtures_table);
     }
+    study.report.heading("Work per insertion order");
+    study.report.paragraph(
+        "The same point sets triangulated with the adaptive kernel (exact signs) and the determinant "
+        "policy in each insertion order: **lexicographic** (the paper's order), **radial** (ascending "
+        "exact distance from the bounding-box centre) and **strips** (strips of " +
+        std::to_string(study_strip_points) + " points, each radial, merged by the Guibas-Stolfi zipper). "
+        "Per input point: flips (edges eroded by insertions plus edges deleted by merges), in-circle "
+        "tests and orientations of the algorithm (insertions and merges), and distance comparisons: the "
+        "compare_distance calls of the radial sort, made only where its floating-point key cannot "
+        "separate two points (counted by the kernel; the floating-point sort itself is not counted). "
+        "merges: strips merged over all sets; certified: results the exact certifier accepted.");
+    study.report.table(work_table);
     study.report.heading("Per family");
     study.report.table(study.table);
     study.report.link("triangulation.csv", "triangulation.csv");
     study.report.link("triangulation_summary.csv", "triangulation_summary.csv");
+    study.report.link("triangulation_work.csv", "triangulation_work.csv");
     return study;
 }
 

@@ -22,7 +22,9 @@ namespace exidel {
 /// Which stage of the adaptive kernel decided a call (for the `stages` study):
 ///   filter   the floating-point filter (stage A);
 ///   stage_b  the exact value of the rounded differences (Shewchuk's stage B); for
-///            incircle_cosine, the exact signs of the two dot products;
+///            incircle_cosine, the exact signs of the two dot products; for
+///            compare_distance, only when the differences were exact (exact ties on
+///            grids end here);
 ///   stage_c  the first-order tail correction (Shewchuk's stage C);
 ///   exact    exact arithmetic inside the range where expansions are error-free (for the
 ///            degree-8 comparison of incircle_cosine: cpp_int integers, measured cheaper);
@@ -36,6 +38,7 @@ struct AdaptiveKernel {
     static Sign orient2d(Point2 a, Point2 b, Point2 c);
     static Sign incircle(Point2 a, Point2 b, Point2 c, Point2 d);
     static Sign incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d);
+    static Sign compare_distance(Point2 c, Point2 p, Point2 q);
 };
 
 static_assert(PredicateKernel<AdaptiveKernel>);
@@ -45,5 +48,6 @@ Sign orient2d_staged(Point2 a, Point2 b, Point2 c, AdaptiveStage& stage);
 Sign incircle_staged(Point2 a, Point2 b, Point2 c, Point2 d, AdaptiveStage& stage);
 Sign incircle_cosine_staged(Point2 a, Point2 b, Point2 c, Point2 d,
                             AdaptiveStage& stage);
+Sign compare_distance_staged(Point2 c, Point2 p, Point2 q, AdaptiveStage& stage);
 
 }  // namespace exidel

@@ -22,15 +22,21 @@ inline constexpr double ccw_a = (3.0 + 16.0 * epsilon) * epsilon;
 inline constexpr double ccw_b = (2.0 + 12.0 * epsilon) * epsilon;
 /// Stage C: second-order terms dropped by the first-order tail correction.
 inline constexpr double ccw_c = (9.0 + 64.0 * epsilon) * epsilon * epsilon;
-/// Stage C: the rounding of the corrected value itself.
-inline constexpr double result_err = (3.0 + 8.0 * epsilon) * epsilon;
+/// Stage C (orient2d and incircle): the error of stage B's estimate of its expansion,
+/// relative to the estimate. Shewchuk's (3 + 8 eps) eps is not covered by our proof for
+/// incircle, whose expansion is only strongly nonoverlapping: proofs/bounds.md#expansion-estimate
+/// proves (40/7) eps + O(eps^2) there (7/3 eps for orient2d), hence 6 eps.
+inline constexpr double result_err = 6.0 * epsilon;
 
 // ---- incircle ---------------------------------------------------------------------------
 // Shewchuk (1997), Section 4.4; proofs/bounds.md#incircle. Shewchuk's stage A constant is
 // (10 + 96 eps) eps; our written derivation only reaches (10 + 104 eps + O(eps^2)) eps, so
 // the code uses 112: it costs nothing measurable and every constant here is one we prove.
 inline constexpr double icc_a = (10.0 + 112.0 * epsilon) * epsilon;
-inline constexpr double icc_b = (4.0 + 48.0 * epsilon) * epsilon;
+/// Stage B. Shewchuk's (4 + 48 eps) eps is not covered by our proof: with the error of the
+/// estimate of a strongly nonoverlapping expansion, proofs/bounds.md#incircle-stages-b-and-c
+/// proves (4 + 60.86 eps + O(eps^2)) eps, hence 64.
+inline constexpr double icc_b = (4.0 + 64.0 * epsilon) * epsilon;
 inline constexpr double icc_c = (44.0 + 576.0 * epsilon) * epsilon * epsilon;
 
 // ---- incircle, semi-static filter ------------------------------------------------------
@@ -55,6 +61,33 @@ inline constexpr double icc_static_max = 0x1p250;
 // pairs they multiply (proofs/bounds.md#underflow).
 inline constexpr double underflow_orient = 0x1p-1070;
 inline constexpr double underflow_incircle = 0x1p-1068;
+
+// ---- compare_distance -------------------------------------------------------------------
+// The filter evaluates the squared lengths lp = fl(fl(dpx dpx) + fl(dpy dpy)) (dpx =
+// fl(px - cx), ...) and lq alike, D = fl(lp - lq), and the permanent T = fl(lp + lq) (both
+// lengths are nonnegative: the permanent is their sum). Each length is within
+// ((1 + eps)^4 - 1) of its exact value, so the filter is orient2d's with four roundings per
+// term instead of three (proofs/bounds.md#compare-distance proves (4 + 22 eps + O(eps^2))
+// eps; lemma gappa/distance_term.g).
+/// Stage A: if |D| > fl(fl(dist_a * T) + underflow_dist), D has the exact sign.
+inline constexpr double dist_a = (4.0 + 32.0 * epsilon) * epsilon;
+/// What gradual underflow can add: four squares (2^-1075 each) and the rounding of the
+/// bound (proofs/bounds.md#underflow proves about 9 * 2^-1075).
+inline constexpr double underflow_dist = 0x1p-1070;
+
+// ---- the radial pre-sort key -------------------------------------------------------------
+// key = fl(fl(dx dx) + fl(dy dy)) with dx = fl(px - cx), dy = fl(py - cy), the exact squared
+// distance K = (px - cx)^2 + (py - cy)^2. When radial_key_min <= key <= radial_key_max,
+//     |key - K| <= radial_key_rel * min(key, K),
+// so key / (1 + radial_key_rel) <= K <= key * (1 + radial_key_rel): two points whose keys
+// differ by more than that factor are ordered by their keys exactly, and only the others
+// need compare_distance. proofs/bounds.md#radial-key proves (4 + O(eps)) eps for every key
+// in [2^-1000, 2^1022]; the limits keep what underflow and overflow can do out of the bound
+// (below 2^-1000 a square's underflow would be a large relative error; above, a square can
+// overflow).
+inline constexpr double radial_key_rel = 8.0 * epsilon;
+inline constexpr double radial_key_min = 0x1p-960;
+inline constexpr double radial_key_max = 0x1p1000;
 
 // ---- incircle_cosine: the squared comparison --------------------------------------------
 // L = |a-c|^2 |b-c|^2 u^2 and R = |a-d|^2 |b-d|^2 v^2 are computed in floating point from

@@ -27,6 +27,7 @@ struct ExactKernel {
     static Sign orient2d(Point2 a, Point2 b, Point2 c);
     static Sign incircle(Point2 a, Point2 b, Point2 c, Point2 d);
     static Sign incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d);
+    static Sign compare_distance(Point2 c, Point2 p, Point2 q);
 };
 
 extern template struct ExactKernel<ExactBackend::gmp>;

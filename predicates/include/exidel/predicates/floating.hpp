@@ -21,6 +21,7 @@ struct FloatingKernel {
     static Sign orient2d(Point2 a, Point2 b, Point2 c) noexcept;
     static Sign incircle(Point2 a, Point2 b, Point2 c, Point2 d) noexcept;
     static Sign incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d) noexcept;
+    static Sign compare_distance(Point2 c, Point2 p, Point2 q) noexcept;
 };
 
 extern template struct FloatingKernel<double>;

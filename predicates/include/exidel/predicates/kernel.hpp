@@ -8,7 +8,7 @@
 
 namespace exidel {
 
-/// A predicate kernel decides the three predicates of exidel for points with finite
+/// A predicate kernel decides the four predicates of exidel for points with finite
 /// double coordinates and returns a Sign.
 ///
 ///   orient2d(a, b, c)            sign of (b - a) x (c - a): positive iff a, b, c turn
@@ -33,6 +33,10 @@ namespace exidel {
 ///                                answer: for example c and d on the same side of ab and
 ///                                both on the circle give cos C = cos D != 0, hence a
 ///                                non-zero result.
+///   compare_distance(c, p, q)    sign of |p - c|^2 - |q - c|^2: positive iff p is
+///                                strictly farther from c than q, zero iff p and q are
+///                                exactly equally far from c (for the radial insertion
+///                                order: sorting by it is sorting by exact distance).
 ///
 /// `is_exact` is true when every sign is the exact sign for every finite input.
 /// `name()` is a short identifier used in tables and on the command line.
@@ -41,6 +45,7 @@ concept PredicateKernel = requires(const K& k, Point2 p) {
     { k.orient2d(p, p, p) } -> std::same_as<Sign>;
     { k.incircle(p, p, p, p) } -> std::same_as<Sign>;
     { k.incircle_cosine(p, p, p, p) } -> std::same_as<Sign>;
+    { k.compare_distance(p, p, p) } -> std::same_as<Sign>;
     { k.name() } -> std::convertible_to<std::string>;
     { K::is_exact } -> std::convertible_to<bool>;
 };

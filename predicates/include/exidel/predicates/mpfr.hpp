@@ -3,8 +3,9 @@
 // The instrument for precision research: exactly the same operations, in the same order,
 // as FloatingKernel, each rounded to nearest at `bits` bits of significand. Inputs are
 // doubles, so every coordinate is exact at bits >= 53. For bits at or above the counts in
-// proofs/bitcounts.md (2b+3 for orient2d, 4b+8 for incircle, 8b+12 for incircle_cosine, b = 53 + the
-// exponent spread of the query) every result equals the exact kernel's.
+// proofs/bitcounts.md (2b+3 for orient2d and compare_distance, 4b+8 for incircle, 8b+12 for
+// incircle_cosine, b = 53 + the exponent spread of the query) every result equals the exact
+// kernel's.
 #pragma once
 
 #include <string>
@@ -30,6 +31,7 @@ public:
     Sign orient2d(Point2 a, Point2 b, Point2 c) const;
     Sign incircle(Point2 a, Point2 b, Point2 c, Point2 d) const;
     Sign incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d) const;
+    Sign compare_distance(Point2 c, Point2 p, Point2 q) const;
 
 private:
     unsigned bits_;

@@ -21,8 +21,27 @@ enum class InCirclePolicy {
     cosine,       ///< the paper's Section 5 test, k.incircle_cosine(a, b, c, p).
 };
 
+/// How the triangulation is built. Every strategy gives a Delaunay triangulation with an
+/// exact kernel, and the same one whenever no four points are cocircular.
+enum class Strategy {
+    automatic,      ///< radial for small inputs, strips above (see choose_strategy)
+    lexicographic,  ///< the paper: one external incremental run in (x, y) order
+    radial,         ///< one external incremental run, ascending distance from a centre
+    strips,         ///< lexicographic strips, each radial, merged by the Guibas-Stolfi zipper
+};
+
+std::string_view to_string(Strategy strategy) noexcept;
+
 struct Options {
     InCirclePolicy incircle = InCirclePolicy::determinant;
+    Strategy strategy = Strategy::automatic;
+    /// Worker threads for the strips strategy (1 = the calling thread only). The output
+    /// does not depend on it.
+    unsigned threads = 1;
+    /// Points per strip for the strips strategy; 0 chooses by input size. A strip is
+    /// extended until its points are not all collinear (the merge needs triangles on both
+    /// sides), so 1 or 2 mean "the smallest non-collinear strips": pure divide and conquer.
+    std::size_t strip_points = 0;
 };
 
 /// What a run records. `off` compiles every counter away.
@@ -43,6 +62,18 @@ struct Counters {
     /// new point p and c are strictly on opposite sides of ab (exact orientation).
     std::uint64_t theorem1_checks = 0;
     std::uint64_t theorem1_violations = 0;
+    /// Radial order: orient2d calls spent finding a visible hull edge from the hash.
+    std::uint64_t visible_search_orientations = 0;
+    /// Strips: the zipper's work.
+    std::uint64_t merge_orientations = 0;   ///< tangent search and candidate validity
+    std::uint64_t merge_incircle_tests = 0;
+    std::uint64_t merge_deleted_edges = 0;  ///< edges of the two sides removed by a merge
+    std::uint64_t merge_cross_edges = 0;
+
+    /// Edge flips in the incremental view plus edges deleted by merges: the work that
+    /// depends on the insertion order.
+    std::uint64_t flips() const noexcept { return eroded_edges + merge_deleted_edges; }
+    Counters& operator+=(const Counters& o) noexcept;
 };
 
 /// Why a run stopped. Everything but non_finite_input and too_many_points means the
@@ -55,6 +86,9 @@ enum class FailureKind {
     hull_walk_exceeded,    ///< a tangent walk went all the way round the hull
     erosion_inconsistent,  ///< the erosion reached an edge that is not on the border
     erosion_exceeded,      ///< the erosion destroyed more triangles than exist
+    point_inside_hull,     ///< radial order: the new point saw no edge of the current hull
+    merge_inconsistent,    ///< strips: the zipper's answers do not describe a merge
+    result_inconsistent,   ///< the finished structure does not close (hull or neighbours)
 };
 
 std::string_view to_string(FailureKind kind) noexcept;
@@ -64,7 +98,9 @@ inline constexpr std::size_t no_index = std::numeric_limits<std::size_t>::max();
 struct Failure {
     FailureKind kind;
     std::size_t input_index = no_index;  ///< the offending / inserted input point
-    std::size_t insertion = no_index;    ///< its position in sorted order (the insertion step)
+    /// Its position in the insertion order (the insertion step); no_index for failures
+    /// of a merge or of the finished structure, which belong to no single insertion.
+    std::size_t insertion = no_index;
     std::string message;                 ///< where it happened, in words
 };
 
@@ -106,6 +142,8 @@ struct Result {
     Triangulation triangulation;  ///< meaningful only when ok()
     Counters counters;            ///< zero unless instrumented
     std::optional<Failure> failure;
+    Strategy strategy = Strategy::lexicographic;  ///< the strategy that ran (never automatic)
+    std::size_t strips = 1;                       ///< pieces merged (1 unless strips ran)
     bool ok() const noexcept { return !failure.has_value(); }
 };
 

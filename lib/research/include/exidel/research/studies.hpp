@@ -6,9 +6,10 @@
 //                  of ulp steps (Kettner, Mehlhorn, Pion, Schirra, Yap, CGTA 2008)
 //   precision      wrong-sign rate of the MPFR kernel against the exact kernel, per
 //                  formulation, near-degenerate family and precision
-//   triangulation  every kernel x in-circle policy x family: how the triangulation ends
-//                  (Delaunay, valid but not Delaunay, invalid, failure), with minimal
-//                  failing inputs written as fixtures
+//   triangulation  every kernel x in-circle policy x family (x insertion order): how the
+//                  triangulation ends (Delaunay, valid but not Delaunay, invalid,
+//                  failure), with minimal failing inputs written as fixtures; and the work
+//                  (flips, predicate calls) of each insertion order with the adaptive kernel
 //   stages         which stage of the adaptive kernel decides, on predicate streams and
 //                  inside triangulations
 #pragma once
@@ -142,17 +143,41 @@ struct Classification {
     std::string detail;  ///< FindingKind or FailureKind name; empty for delaunay
 };
 
-/// Triangulates `points` with `kernel` and `policy` (at most call_budget predicate calls;
-/// 0 means 64 n^2 + 10^6) and certifies the result exactly.
+/// The insertion orders a study runs: every delaunay::Strategy but `automatic` (which
+/// only picks one of them by input size). lexicographic is the paper's algorithm and the
+/// default subject of the triangulation study.
+inline constexpr std::array all_orders{delaunay::Strategy::lexicographic, delaunay::Strategy::radial,
+                                       delaunay::Strategy::strips};
+
+/// Points per strip whenever a study runs the strips order: small, so that the study's
+/// point sets (tens to hundreds of points) are cut into several strips and the merges,
+/// the part of strips that the other orders lack, actually run.
+inline constexpr std::size_t study_strip_points = 64;
+
+/// The delaunay::Options every study uses for `policy` and `order`: one thread (the
+/// output does not depend on it, and the studies parallelise over inputs) and strips of
+/// study_strip_points points.
+delaunay::Options study_options(delaunay::InCirclePolicy policy, delaunay::Strategy order);
+
+/// Orders from a comma-separated list of lexicographic, radial, strips and "all", in the
+/// order given, repeats dropped. Throws std::invalid_argument naming the spellings.
+std::vector<delaunay::Strategy> parse_orders(std::string_view list);
+
+/// Triangulates `points` with `kernel`, `policy` and insertion `order` (study_options;
+/// at most call_budget predicate calls, 0 meaning 64 n^2 + 10^6) and certifies the
+/// result exactly.
 Classification classify_triangulation(std::span<const Point2> points, const Kernel& kernel,
                                       delaunay::InCirclePolicy policy,
+                                      delaunay::Strategy order = delaunay::Strategy::lexicographic,
                                       std::uint64_t call_budget = 0);
 
 /// Delta debugging: a smallest subset of `points` (no single point removable) whose
-/// outcome is still `target`.outcome (and, for failures, the same FailureKind).
+/// outcome under `order` is still `target`.outcome (and, for failures, the same
+/// FailureKind).
 std::vector<Point2> shrink_failing_input(std::vector<Point2> points, const Kernel& kernel,
                                          delaunay::InCirclePolicy policy,
-                                         const Classification& target);
+                                         const Classification& target,
+                                         delaunay::Strategy order = delaunay::Strategy::lexicographic);
 
 /// Fixture text: '#' comment lines (header), then "x y" with C99 hex floats, which
 /// `exidel triangulate -i FILE` reads back exactly.
@@ -163,7 +188,10 @@ struct TriangulationOptions {
     std::vector<testing::Family> families;       ///< empty: every family
     std::size_t seeds = 0;                       ///< point sets per family; 0: default
     std::vector<std::size_t> sizes;              ///< empty: 50, 100, 200, 500 (cycled over seeds)
-    std::size_t shrink_per_class = 2;            ///< fixtures per (kernel, policy, outcome)
+    std::size_t shrink_per_class = 2;            ///< fixtures per (order, kernel, policy, outcome)
+    /// Insertion orders for the outcome tables and fixtures; empty: lexicographic only
+    /// (the paper's algorithm). The work table always runs all_orders.
+    std::vector<delaunay::Strategy> orders;
 };
 
 struct TriangulationRun {
@@ -172,6 +200,7 @@ struct TriangulationRun {
     std::string kernel;
     delaunay::InCirclePolicy policy;
     Classification result;
+    delaunay::Strategy order = delaunay::Strategy::lexicographic;
 };
 
 struct Fixture {
@@ -180,11 +209,26 @@ struct Fixture {
     delaunay::InCirclePolicy policy;
     Classification result;
     std::size_t original_size = 0, size = 0;
+    delaunay::Strategy order = delaunay::Strategy::lexicographic;
+};
+
+/// The work of one insertion order on one family's point sets (every seed of the study),
+/// with the adaptive kernel and the determinant policy: the algorithm's counters summed
+/// over the sets, and how many results the certifier accepted.
+struct OrderWork {
+    testing::Family family;
+    delaunay::Strategy order;
+    std::size_t sets = 0, points = 0;  ///< points: input points, duplicates included
+    delaunay::Counters counters;
+    std::uint64_t distance_comparisons = 0;  ///< compare_distance calls (the radial sort)
+    std::uint64_t merges = 0;                ///< strips merged: sum of (strips - 1)
+    std::size_t certified = 0;               ///< sets whose result is certified Delaunay
 };
 
 struct TriangulationStudy : StudyResult {
     std::vector<TriangulationRun> runs;
     std::vector<Fixture> fixtures;
+    std::vector<OrderWork> work;  ///< per family (study order), then per all_orders
 };
 
 TriangulationStudy run_triangulation_study(const TriangulationOptions& options,
@@ -193,13 +237,21 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options,
 /// Reads a fixture (or any xy point file), classifies it as the study would, and says
 /// so: the `exidel study replay` command.
 Classification replay_fixture(const std::filesystem::path& file, const Kernel& kernel,
-                              delaunay::InCirclePolicy policy);
+                              delaunay::InCirclePolicy policy,
+                              delaunay::Strategy order = delaunay::Strategy::lexicographic);
 
 // =================================================================================
 // stages
 
-/// Counts per predicate (orient2d, incircle, incircle_cosine) and AdaptiveStage.
-using StageCounts = std::array<std::array<std::uint64_t, adaptive_stage_count>, 3>;
+/// The predicates whose stages are counted, in the order of StageCounts' rows: the
+/// three formulations (same positions as Formulation) and compare_distance, the radial
+/// insertion order's sort key.
+inline constexpr std::array<std::string_view, 4> stage_predicates{"orient2d", "incircle",
+                                                                  "incircle_cosine", "compare_distance"};
+inline constexpr std::size_t compare_distance_row = 3;
+
+/// Counts per predicate (stage_predicates) and AdaptiveStage.
+using StageCounts = std::array<std::array<std::uint64_t, adaptive_stage_count>, stage_predicates.size()>;
 
 /// The adaptive kernel, counting which stage decided each call: a PredicateKernel, so
 /// the triangulation template runs with it unchanged.
@@ -209,6 +261,7 @@ struct StageCountingKernel {
     Sign orient2d(Point2 a, Point2 b, Point2 c) const;
     Sign incircle(Point2 a, Point2 b, Point2 c, Point2 d) const;
     Sign incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d) const;
+    Sign compare_distance(Point2 c, Point2 p, Point2 q) const;
     mutable StageCounts counts{};  // mutable: the kernel interface is const
 };
 static_assert(PredicateKernel<StageCountingKernel>);
@@ -216,13 +269,15 @@ static_assert(PredicateKernel<StageCountingKernel>);
 struct StagesOptions {
     std::vector<testing::Family> families;  ///< empty: every family
     std::size_t samples = 0;                ///< queries per family and predicate; 0: default
-    std::size_t seeds = 0;                  ///< triangulations per family and policy; 0: default
+    std::size_t seeds = 0;                  ///< triangulations per family and context; 0: default
     std::size_t size = 0;                   ///< points per triangulation; 0: default
 };
 
 struct StagesRow {
     testing::Family family;
-    std::string context;  ///< "stream", "triangulation/determinant", "triangulation/cosine"
+    /// "stream"; "triangulation/determinant" and "triangulation/cosine" (the paper's
+    /// lexicographic order with each policy); "triangulation/radial" (determinant).
+    std::string context;
     StageCounts counts{};
 };
 

@@ -1,0 +1,457 @@
+// exidel: the external incremental Delaunay triangulation (Yifeng Cai 2025) of a sequence
+// of points given in an external order, one in which every new point lies strictly
+// outside the hull of the earlier ones, so that no point location is needed (Alg. 1):
+//
+//   1. seed      the first point off the line of the earlier ones, fanned to them;
+//   2. tangents  from a hull vertex that sees the new point p, walk the hull clockwise to
+//                the lower and counter-clockwise to the upper tangent point (Alg. 2 / 5).
+//                An edge is visible only when p is strictly on its outer side: a point
+//                collinear with a hull edge connects to the nearer endpoint, collinear
+//                points stay hull vertices (the paper's hull appendix keeps the farther
+//                one, which is right for hulls and wrong for triangulations);
+//   3. erosion   pop border edges from a stack; an edge whose triangle's circumcircle
+//                strictly contains p is deleted and the two edges behind it pushed
+//                (Alg. 3). Points on the circle keep their edge;
+//   4. connect   fan p to the surviving border.
+//
+// Two external orders (Order):
+//   lexicographic  the paper's (x, y) order. The last inserted point is the largest so
+//                  far, hence a hull vertex, and p, larger still, sees one of its two hull
+//                  edges: the walks start there.
+//   radial         ascending distance from a centre c, ties lexicographic. The earlier
+//                  points lie in the closed disc of radius |p - c| around c, and p is on
+//                  its boundary circle; a strictly convex disc has no boundary point in the
+//                  convex hull of other points of the disc, so p (distinct from them) is
+//                  strictly outside their hull and sees at least one hull edge. Which one
+//                  is not known in advance: an angular hash of hull vertices around c (as
+//                  in delaunator) proposes a start, and a bounded walk along the hull tests
+//                  edges with orient2d until one is strictly visible (see visible_edge).
+//                  The first points may be collinear; the caller sorts that collinear
+//                  prefix lexicographically, which keeps the order external (they are the
+//                  nearest points) and lets the seed fan them in order along their line.
+//
+// The in-circle test of step 3 is decided in exactly one place: Builder::in_circle.
+// Every walk is bounded; an answer of an inexact kernel that contradicts the geometry
+// stops the run with a Failure naming the step.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "exidel/delaunay/detail/radial.hpp"
+#include "exidel/delaunay/result.hpp"
+#include "exidel/predicates/adaptive.hpp"
+#include "exidel/predicates/kernel.hpp"
+
+namespace exidel::delaunay::detail {
+
+/// A triangulation in the layout of Triangulation, over vertex ids that are positions in
+/// the point sequence it was built from (or, after a merge, sorted positions).
+struct Mesh {
+    std::vector<std::uint32_t> triangles;
+    std::vector<std::int32_t> halfedges;
+    std::vector<std::uint32_t> hull_next, hull_prev;  // the hull as a linked cycle
+    std::vector<std::int32_t> hull_edge;  // v -> the half-edge v -> hull_next[v]
+    std::size_t hull_size = 0;
+    bool collinear = false;  // no triangle: every point on one line
+};
+
+/// Vertex slot of a deleted triangle, and hull_next of a vertex no longer on the hull.
+inline constexpr std::uint32_t dead = 0xffffffffu;
+
+enum class Order { lexicographic, radial };
+
+/// The counters of one builder or merge; `off` compiles every increment away.
+template <Instrumentation I>
+struct Counting {
+    Counters counters_{};
+    void count(std::uint64_t Counters::*field) {
+        if constexpr (I != Instrumentation::off) ++(counters_.*field);
+    }
+};
+
+template <PredicateKernel K, Instrumentation I, InCirclePolicy P, Order O>
+class Builder : Counting<I> {
+public:
+    /// `points` in an external order (see above); `input_of` maps a position to the input
+    /// index named in failure messages; `centre` is the radial order's centre.
+    Builder(const K& kernel, std::span<const Point2> points,
+            std::span<const std::uint32_t> input_of, Point2 centre = {})
+        : k_(kernel), pts_(points), input_of_(input_of), centre_(centre) {}
+
+    /// Builds into `mesh` (its vectors are replaced). On failure the mesh is meaningless.
+    std::optional<Failure> run(Mesh& mesh) {
+        const std::size_t n = pts_.size();
+        std::size_t first_off = n;
+        // The paper's "try to create a triangle": P[j] against the line P[0] P[j-1].
+        for (std::size_t j = 2; j < n; ++j) {
+            this->count(&Counters::seed_orientations);
+            if (k_.orient2d(pts_[0], pts_[j - 1], pts_[j]) != Sign::zero) {
+                first_off = j;
+                break;
+            }
+        }
+        mesh = Mesh{};
+        if (first_off == n) {
+            mesh.collinear = true;
+            return std::nullopt;
+        }
+        m_ = &mesh;
+        mesh.hull_next.assign(n, 0);
+        mesh.hull_prev.assign(n, 0);
+        mesh.hull_edge.assign(n, -1);
+        mesh.triangles.reserve(6 * n);
+        mesh.halfedges.reserve(6 * n);
+        if constexpr (O == Order::radial) prepare_hash();
+        seed(first_off);
+        for (std::size_t i = first_off + 1; i < n; ++i) {
+            if (auto failure = insert(static_cast<std::uint32_t>(i))) return failure;
+        }
+        return std::nullopt;
+    }
+
+    const Counters& counters() const noexcept { return this->counters_; }
+
+private:
+    // One entry of the erosion stack: the half-edge of the triangle behind a border edge
+    // (or -1: nothing behind it) and the border edge's end vertex. Its start vertex is the
+    // end of the border built so far, because the stack is processed in border order.
+    struct Pending {
+        std::int32_t behind;
+        std::uint32_t end;
+    };
+
+    /// The one place where the in-circle question is decided. abc is the triangle behind
+    /// border edge a->b (counter-clockwise: c on the left of a->b), p the new point on
+    /// the right. True: p strictly inside the circle through a, b, c.
+    bool in_circle(Point2 a, Point2 b, Point2 c, Point2 p) {
+        this->count(&Counters::incircle_tests);
+        if constexpr (I == Instrumentation::theorem1) {
+            // Theorem 1, decided exactly whatever kernel runs the algorithm.
+            ++this->counters_.theorem1_checks;
+            if (!(AdaptiveKernel::orient2d(a, b, c) == Sign::positive &&
+                  AdaptiveKernel::orient2d(a, b, p) == Sign::negative)) {
+                ++this->counters_.theorem1_violations;
+            }
+        }
+        if constexpr (P == InCirclePolicy::determinant) {
+            return k_.incircle(a, b, c, p) == Sign::positive;
+        } else {
+            // Paper roles: B = a, C = b, D = c (opposite vertex), A = p (new point).
+            return k_.incircle_cosine(a, b, c, p) == Sign::positive;
+        }
+    }
+
+    std::uint32_t new_triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        this->count(&Counters::triangles_created);
+        auto& tris = m_->triangles;
+        std::uint32_t t;
+        if (!free_.empty()) {
+            t = free_.back();
+            free_.pop_back();
+            tris[3 * t] = a;
+            tris[3 * t + 1] = b;
+            tris[3 * t + 2] = c;
+        } else {
+            t = static_cast<std::uint32_t>(tris.size() / 3);
+            tris.insert(tris.end(), {a, b, c});
+            m_->halfedges.insert(m_->halfedges.end(), {-1, -1, -1});
+        }
+        return t;
+    }
+
+    void link(std::int32_t a, std::int32_t b) {
+        m_->halfedges[static_cast<std::size_t>(a)] = b;
+        if (b >= 0) m_->halfedges[static_cast<std::size_t>(b)] = a;
+    }
+
+    void set_next(std::uint32_t a, std::uint32_t b) {
+        m_->hull_next[a] = b;
+        m_->hull_prev[b] = a;
+    }
+
+    // Fan of the collinear prefix P[0..k-1] (in order along its line) to P[k] (k >= 2).
+    void seed(std::size_t k) {
+        const auto apex = static_cast<std::uint32_t>(k);
+        const bool left = k_.orient2d(pts_[0], pts_[k - 1], pts_[k]) == Sign::positive;
+        auto& hull_edge = m_->hull_edge;
+        std::int32_t prev_t = -1;
+        for (std::uint32_t i = 0; i + 1 < apex; ++i) {
+            // left: (P_i, P_i+1, apex); right: (P_i+1, P_i, apex). Half-edge 3t is the
+            // chain edge, on the hull.
+            const std::uint32_t t = left ? new_triangle(i, i + 1, apex) : new_triangle(i + 1, i, apex);
+            const auto T = static_cast<std::int32_t>(3 * t);
+            hull_edge[left ? i : i + 1] = T;
+            if (prev_t >= 0) {
+                // Shared edge apex-P_i: left: prev's P_i->apex (3p+1) with this apex->P_i
+                // (3t+2); right: prev's apex->P_i (3p+2) with this P_i->apex (3t+1).
+                link(left ? 3 * prev_t + 1 : 3 * prev_t + 2, left ? T + 2 : T + 1);
+            }
+            prev_t = static_cast<std::int32_t>(t);
+        }
+        const std::uint32_t last_chain = apex - 1;
+        if (left) {
+            // Hull: P_0, P_1, ..., P_k-1, apex.
+            for (std::uint32_t i = 0; i + 1 < apex; ++i) set_next(i, i + 1);
+            set_next(last_chain, apex);
+            set_next(apex, 0);
+            hull_edge[last_chain] = 3 * prev_t + 1;
+            hull_edge[apex] = 2;  // apex->P_0 in triangle 0
+        } else {
+            // Hull: P_0, apex, P_k-1, ..., P_1.
+            set_next(0, apex);
+            set_next(apex, last_chain);
+            for (std::uint32_t i = last_chain; i > 0; --i) set_next(i, i - 1);
+            hull_edge[0] = 1;  // P_0->apex in triangle 0
+            hull_edge[apex] = 3 * prev_t + 2;
+        }
+        m_->hull_size = k + 1;
+        last_ = apex;
+        if constexpr (O == Order::radial) {
+            for (std::uint32_t v = 0; v <= apex; ++v) hash_[hash_key(pts_[v])] = v;
+        }
+    }
+
+    std::optional<Failure> fail(FailureKind kind, std::uint32_t i, std::string what) const {
+        return Failure{kind, input_of_[i], i,
+                       "insertion of point " + std::to_string(i) + " of the order (input index " +
+                           std::to_string(input_of_[i]) + "): " + std::move(what)};
+    }
+
+    // The radial order's angular hash: a pseudo-angle of p - centre (monotone in the angle,
+    // no trigonometry), cut into hash_.size() buckets. Only a starting guess: any bucket is
+    // correct, a good one makes the walk in visible_edge short. The angle is measured from
+    // the direction of the points' bounding-box centre and stretched over the range the
+    // points actually cover: with a centre far outside the points (the osculating centre
+    // of a sampled convex curve) they span a tiny angle, and unstretched buckets would put
+    // them all in one, making the walk linear per point.
+    double pseudo_angle(Point2 p) const {
+        const double dx = p.x - centre_.x, dy = p.y - centre_.y;
+        const double rx = dx * axis_x_ + dy * axis_y_, ry = dy * axis_x_ - dx * axis_y_;
+        const double r = std::abs(rx) + std::abs(ry);
+        if (!(r > 0) || !std::isfinite(r)) return 0;  // the centre itself, or overflow
+        const double q = rx / r;                        // in [-1, 1]
+        return ry >= 0 ? 1 - q : q - 1;                 // in [-2, 2], 0 along the axis
+    }
+    void prepare_hash() {
+        hash_.assign(std::max<std::size_t>(16, static_cast<std::size_t>(std::sqrt(double(pts_.size())))),
+                     dead);
+        const Point2 box = bounding_box_centre(pts_);
+        const double ax = box.x - centre_.x, ay = box.y - centre_.y;
+        const double len = std::abs(ax) + std::abs(ay);
+        if (len > 0 && std::isfinite(len)) axis_x_ = ax / len, axis_y_ = ay / len;
+        angle_lo_ = 2;
+        double hi = -2;
+        for (const Point2& p : pts_) {
+            const double a = pseudo_angle(p);
+            angle_lo_ = std::min(angle_lo_, a);
+            hi = std::max(hi, a);
+        }
+        angle_scale_ = hi > angle_lo_ ? static_cast<double>(hash_.size()) / (hi - angle_lo_) : 0;
+        if (!std::isfinite(angle_scale_)) angle_scale_ = 0;
+    }
+    std::size_t hash_key(Point2 p) const {
+        const double k = (pseudo_angle(p) - angle_lo_) * angle_scale_;
+        if (!(k > 0)) return 0;  // also NaN
+        return std::min(static_cast<std::size_t>(std::min(k, 1e18)), hash_.size() - 1);
+    }
+
+    // Radial order: a hull vertex e whose edge e -> next(e) p sees strictly. The hash gives
+    // a live hull vertex near p's angle; from it the walk tests hull edges with orient2d,
+    // alternately one more forwards and one more backwards, and stops at the first with p
+    // strictly on its right, so the edge returned is visible by the kernel's own answer and
+    // the walk costs the hull distance from the start to the nearest visible edge (a
+    // one-way walk can go round the whole hull: quadratic on a convex curve, where every
+    // point lands in the same bucket). One exists because p is outside the hull (see the
+    // order's argument above); with an inexact kernel the walk may pass every edge without
+    // finding one, and that is reported, not guessed.
+    std::optional<std::uint32_t> visible_edge(Point2 p) {
+        const auto& next = m_->hull_next;
+        const auto& prev = m_->hull_prev;
+        const std::size_t key = hash_key(p);
+        std::uint32_t start = dead;
+        for (std::size_t j = 0; j < hash_.size(); ++j) {
+            const std::uint32_t v = hash_[(key + j) % hash_.size()];
+            if (v != dead && next[v] != dead) {
+                start = v;
+                break;
+            }
+        }
+        if (start == dead) return std::nullopt;
+        auto sees = [&](std::uint32_t e) {
+            this->count(&Counters::visible_search_orientations);
+            return k_.orient2d(pts_[e], pts_[next[e]], p) == Sign::negative;
+        };
+        std::uint32_t forward = start, backward = prev[start];
+        for (std::size_t tested = 0; tested < m_->hull_size; tested += 2) {
+            if (sees(forward)) return forward;
+            if (sees(backward)) return backward;
+            forward = next[forward];
+            backward = prev[backward];
+        }
+        return std::nullopt;
+    }
+
+    std::optional<Failure> insert(std::uint32_t i) {
+        const Point2 p = pts_[i];
+        auto& next = m_->hull_next;
+        auto& prev = m_->hull_prev;
+        auto& hull_edge = m_->hull_edge;
+        auto& tris = m_->triangles;
+        auto& half = m_->halfedges;
+
+        // Where the tangent walks start: a vertex with a visible edge at it.
+        std::uint32_t from = last_;
+        std::size_t visible = 0;
+        std::uint32_t upper = from;
+        if constexpr (O == Order::radial) {
+            const auto e = visible_edge(p);
+            if (!e) {
+                return fail(FailureKind::point_inside_hull, i,
+                            "no edge of the current hull is visible from the point");
+            }
+            from = *e;
+            upper = next[from];  // the edge from -> upper is visible: already tested
+            visible = 1;
+        }
+
+        // Tangent walks (Alg. 5 without its farther-point rule). Together they can pass
+        // at most hull_size - 1 edges: a point outside the hull cannot see all of them.
+        std::uint32_t lower = from;
+        for (;;) {
+            const std::uint32_t a = prev[lower];
+            this->count(&Counters::tangent_orientations);
+            if (k_.orient2d(pts_[a], pts_[lower], p) != Sign::negative) break;
+            lower = a;
+            if (++visible >= m_->hull_size) {
+                return fail(FailureKind::hull_walk_exceeded, i, "lower tangent walk");
+            }
+        }
+        for (;;) {
+            const std::uint32_t b = next[upper];
+            this->count(&Counters::tangent_orientations);
+            if (k_.orient2d(pts_[upper], pts_[b], p) != Sign::negative) break;
+            upper = b;
+            if (++visible >= m_->hull_size) {
+                return fail(FailureKind::hull_walk_exceeded, i, "upper tangent walk");
+            }
+        }
+        if (visible == 0) {
+            return fail(FailureKind::no_visible_edge, i, "both hull edges at the last point");
+        }
+
+        // Erosion (Alg. 3 over half-edges). The visible chain lower -> ... -> upper is
+        // pushed so that its first edge is on top: the border then comes out in order.
+        stack_.clear();
+        border_vertex_.clear();
+        border_behind_.clear();
+        for (std::uint32_t v = upper; v != lower;) {
+            const std::uint32_t a = prev[v];
+            stack_.push_back({hull_edge[a], v});
+            v = a;
+        }
+        const std::size_t live = tris.size() / 3 - free_.size();
+        std::size_t eroded = 0;
+        std::uint32_t x = lower;
+        border_vertex_.push_back(lower);
+        while (!stack_.empty()) {
+            const Pending top = stack_.back();
+            if (top.behind >= 0) {
+                const auto e = static_cast<std::size_t>(top.behind);
+                const std::size_t en = next_halfedge(e), ep = prev_halfedge(e);
+                if (tris[e] != x || tris[en] != top.end) {
+                    return fail(FailureKind::erosion_inconsistent, i,
+                                "half-edge " + std::to_string(e) +
+                                    " is not the border edge it was pushed as");
+                }
+                const std::uint32_t c = tris[ep];
+                if (in_circle(pts_[x], pts_[top.end], pts_[c], p)) {
+                    stack_.pop_back();
+                    stack_.push_back({half[en], top.end});  // c -> end
+                    stack_.push_back({half[ep], c});        // x -> c, processed first
+                    const std::size_t t = e / 3;
+                    tris[3 * t] = tris[3 * t + 1] = tris[3 * t + 2] = dead;
+                    free_.push_back(static_cast<std::uint32_t>(t));
+                    this->count(&Counters::eroded_edges);
+                    this->count(&Counters::triangles_destroyed);
+                    if (++eroded > live) {
+                        return fail(FailureKind::erosion_exceeded, i, "erosion stack");
+                    }
+                    continue;
+                }
+            }
+            stack_.pop_back();
+            border_vertex_.push_back(top.end);
+            border_behind_.push_back(top.behind);
+            x = top.end;
+        }
+
+        // Connect: border edge a -> b gets triangle (b, a, p). Its half-edge b->a faces
+        // the triangle behind; with nothing behind, b->a is a hull edge outside the
+        // visible chain (the eroded triangle had two hull edges) and keeps being one.
+        std::int32_t prev_t = -1;
+        for (std::size_t j = 0; j < border_behind_.size(); ++j) {
+            const std::uint32_t a = border_vertex_[j], b = border_vertex_[j + 1];
+            const auto t = static_cast<std::int32_t>(new_triangle(b, a, i));
+            const std::int32_t behind = border_behind_[j];
+            link(3 * t, behind);
+            if (behind < 0) hull_edge[b] = 3 * t;
+            if (prev_t < 0) {
+                half[3 * static_cast<std::size_t>(t) + 1] = -1;
+                hull_edge[lower] = 3 * t + 1;  // lower -> p
+            } else {
+                link(3 * t + 1, 3 * prev_t + 2);
+            }
+            prev_t = t;
+        }
+        half[3 * static_cast<std::size_t>(prev_t) + 2] = -1;
+        hull_edge[i] = 3 * prev_t + 2;  // p -> upper
+        if constexpr (O == Order::radial) {
+            // Vertices strictly between the tangent points leave the hull: the hash must
+            // not propose them again.
+            for (std::uint32_t v = next[lower]; v != upper;) {
+                const std::uint32_t w = next[v];
+                next[v] = dead;
+                v = w;
+            }
+        }
+        set_next(lower, i);
+        set_next(i, upper);
+        m_->hull_size = m_->hull_size + 2 - visible;
+        last_ = i;
+        if constexpr (O == Order::radial) {
+            // The new point always takes its bucket; the tangent points only refill
+            // buckets whose vertex left the hull. Overwriting a live entry with a tangent
+            // point can move a bucket's start to the far end of a long chain (on a convex
+            // curve the tangent is often the opposite end of the arc), and then every
+            // later point in that bucket walks the whole chain.
+            for (const std::uint32_t v : {lower, upper}) {
+                std::uint32_t& slot = hash_[hash_key(pts_[v])];
+                if (slot == dead || next[slot] == dead) slot = v;
+            }
+            hash_[hash_key(p)] = i;
+        }
+        return std::nullopt;
+    }
+
+    const K& k_;
+    std::span<const Point2> pts_;
+    std::span<const std::uint32_t> input_of_;
+    Point2 centre_;
+    Mesh* m_ = nullptr;
+    std::vector<std::uint32_t> free_;  // slots of eroded triangles, reused by connect
+    std::vector<Pending> stack_;       // reused by every insertion: no allocation
+    std::vector<std::uint32_t> border_vertex_;
+    std::vector<std::int32_t> border_behind_;
+    std::vector<std::uint32_t> hash_;  // radial: bucket -> a hull vertex (or dead)
+    double axis_x_ = 1, axis_y_ = 0;   // radial: the direction the hash angle starts from
+    double angle_lo_ = 0, angle_scale_ = 0;
+    std::uint32_t last_ = 0;
+};
+
+}  // namespace exidel::delaunay::detail

@@ -1,0 +1,186 @@
+// exidel: divide and conquer of external strips. The sorted points are cut into runs of
+// consecutive positions (vertical strips, lexicographically separated); each strip is
+// triangulated by the external incremental algorithm in radial order about its own
+// bounding-box centre (short hull walks, few flips, and a convex curve costs O(n log n)
+// instead of the lexicographic order's O(n^2)); neighbouring pieces are then merged
+// pairwise, level by level, by the Guibas-Stolfi zipper (merge.hpp). Strips and the
+// merges of one level are independent and run on `threads` threads; which thread does
+// which job never changes the result, so the output is the same for every thread count.
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <cstdint>
+#include <exception>
+#include <functional>
+#include <optional>
+#include <span>
+#include <thread>
+#include <vector>
+
+#include "exidel/delaunay/detail/builder.hpp"
+#include "exidel/delaunay/detail/merge.hpp"
+#include "exidel/delaunay/detail/radial.hpp"
+#include "exidel/delaunay/result.hpp"
+
+namespace exidel::delaunay::detail {
+
+/// Runs job(0) ... job(count - 1) on `threads` threads (the caller's included).
+inline void parallel_for(std::size_t count, unsigned threads,
+                         const std::function<void(std::size_t)>& job) {
+    const std::size_t workers = std::min<std::size_t>(std::max(threads, 1u), count);
+    if (workers <= 1) {
+        for (std::size_t j = 0; j < count; ++j) job(j);
+        return;
+    }
+    std::atomic<std::size_t> next{0};
+    std::vector<std::exception_ptr> errors(workers);
+    auto work = [&](std::size_t w) {
+        try {
+            for (std::size_t j; (j = next.fetch_add(1)) < count;) job(j);
+        } catch (...) {
+            errors[w] = std::current_exception();
+            next = count;  // stop handing out jobs
+        }
+    };
+    std::vector<std::thread> pool;
+    for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(work, w);
+    work(0);
+    for (auto& t : pool) t.join();
+    for (auto& e : errors) {
+        if (e) std::rethrow_exception(e);
+    }
+}
+
+/// Cut positions: strips [cuts[s], cuts[s+1]) of at least `target` points, each extended
+/// until its points are not all collinear (by the kernel's orient2d); a collinear tail
+/// joins the last strip. Returns {0, n} when no cut is possible.
+template <PredicateKernel K>
+std::vector<std::uint32_t> strip_cuts(std::span<const Point2> pts, std::size_t target,
+                                      const K& kernel) {
+    const std::size_t n = pts.size();
+    target = std::max<std::size_t>(target, 3);
+    std::vector<std::uint32_t> cuts{0};
+    std::size_t a = 0;
+    while (a < n) {
+        if (n - a < 3) {  // one or two points are collinear: they join the last strip
+            if (cuts.size() > 1) {
+                cuts.back() = static_cast<std::uint32_t>(n);
+            } else {
+                cuts.push_back(static_cast<std::uint32_t>(n));
+            }
+            return cuts;
+        }
+        std::size_t b = std::min(a + target, n);
+        // Points a, a+1 are distinct; the strip needs one point off their line.
+        std::size_t off = a + 2;
+        while (off < b && kernel.orient2d(pts[a], pts[a + 1], pts[off]) == Sign::zero) ++off;
+        if (off == b) {
+            while (off < n && kernel.orient2d(pts[a], pts[a + 1], pts[off]) == Sign::zero) ++off;
+            b = std::min(off + 1, n);
+        }
+        if (off >= n && cuts.size() > 1) {
+            cuts.back() = static_cast<std::uint32_t>(n);  // collinear tail: join the last strip
+            return cuts;
+        }
+        cuts.push_back(static_cast<std::uint32_t>(b));
+        a = b;
+    }
+    return cuts;
+}
+
+/// Triangulates the sorted points by strips into `mesh` (over sorted positions). With a
+/// single strip, returns std::nullopt with mesh.collinear possibly set, as Builder does.
+template <PredicateKernel K, Instrumentation I, InCirclePolicy P>
+std::optional<Failure> build_strips(const K& kernel, std::span<const Point2> pts,
+                                    std::span<const std::uint32_t> input_of,
+                                    std::span<const std::uint32_t> cuts, unsigned threads,
+                                    Mesh& mesh, Counters& counters) {
+    const std::size_t n = pts.size();
+    const std::size_t strips = cuts.size() - 1;
+    mesh = Mesh{};
+    mesh.triangles.assign(6 * n, dead);
+    mesh.halfedges.assign(6 * n, -1);
+    mesh.hull_next.assign(n, dead);
+    mesh.hull_prev.assign(n, dead);
+    mesh.hull_edge.assign(n, -1);
+    std::vector<Piece> pieces(strips);
+    std::vector<std::optional<Failure>> failures(strips);
+    std::vector<Counters> job_counters(strips);
+
+    parallel_for(strips, threads, [&](std::size_t s) {
+        const std::uint32_t a = cuts[s], b = cuts[s + 1];
+        const auto strip = pts.subspan(a, b - a);
+        const Point2 centre = radial_centre(strip);
+        std::vector<std::uint32_t> order = radial_order(strip, centre, kernel);
+        sort_collinear_prefix(strip, order, kernel);
+        std::vector<Point2> local(order.size());
+        std::vector<std::uint32_t> local_input(order.size());
+        for (std::size_t j = 0; j < order.size(); ++j) {
+            local[j] = strip[order[j]];
+            local_input[j] = input_of[a + order[j]];
+        }
+        Mesh part;
+        Builder<K, I, P, Order::radial> builder(kernel, local, local_input, centre);
+        failures[s] = builder.run(part);
+        job_counters[s] = builder.counters();
+        if (failures[s]) return;
+        if (part.collinear) {
+            failures[s] = Failure{FailureKind::merge_inconsistent, input_of[a], a,
+                                  "strip [" + std::to_string(a) + ", " + std::to_string(b) +
+                                      ") came out collinear although the cut found a "
+                                      "point off its line"};
+            return;
+        }
+        // Copy into the shared arrays: local vertex j is sorted position a + order[j],
+        // local triangle t is slot 2a + t.
+        const std::size_t base = 6 * static_cast<std::size_t>(a);
+        for (std::size_t e = 0; e < part.triangles.size(); ++e) {
+            mesh.triangles[base + e] = a + order[part.triangles[e]];
+            mesh.halfedges[base + e] =
+                part.halfedges[e] < 0 ? -1 : part.halfedges[e] + static_cast<std::int32_t>(base);
+        }
+        for (std::size_t j = 0; j < order.size(); ++j) {
+            const std::uint32_t g = a + order[j];
+            if (part.hull_next[j] != dead) {
+                mesh.hull_next[g] = a + order[part.hull_next[j]];
+                mesh.hull_prev[g] = a + order[part.hull_prev[j]];
+                mesh.hull_edge[g] = part.hull_edge[j] < 0
+                                        ? -1
+                                        : part.hull_edge[j] + static_cast<std::int32_t>(base);
+            }
+        }
+        Piece& piece = pieces[s];
+        piece.first = a;
+        piece.end = b;
+        for (std::size_t t = 2 * a + part.triangles.size() / 3; t < 2 * std::size_t{b}; ++t) {
+            piece.free.push_back(static_cast<std::uint32_t>(t));
+        }
+    });
+    for (std::size_t s = 0; s < strips; ++s) {
+        counters += job_counters[s];
+        if (failures[s]) return failures[s];
+    }
+
+    // Merge neighbours, level by level: (0,1), (2,3), ... then (0,2), (4,6), ...
+    std::vector<std::uint8_t> gone(6 * n, 0);
+    for (std::size_t width = 1; width < strips; width *= 2) {
+        const std::size_t merges = (strips + 2 * width - 1) / (2 * width);
+        std::vector<std::optional<Failure>> merge_failures(merges);
+        std::vector<Counters> merge_counters(merges);
+        parallel_for(merges, threads, [&](std::size_t j) {
+            const std::size_t left = 2 * width * j, right = left + width;
+            if (right >= strips) return;
+            Merger<K, I> merger(kernel, pts, mesh, gone);
+            merge_failures[j] = merger.merge(pieces[left], pieces[right]);
+            merge_counters[j] = merger.counters();
+        });
+        for (std::size_t j = 0; j < merges; ++j) {
+            counters += merge_counters[j];
+            if (merge_failures[j]) return merge_failures[j];
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace exidel::delaunay::detail

@@ -1,0 +1,385 @@
+// The strategies of exidel::delaunay::triangulate beyond the paper's order: radial
+// insertion, strips merged by the Guibas-Stolfi zipper, threads. Every exact run is
+// certified and compared with CGAL; the strategies agree with each other; thread count
+// never changes the output; merge-specific degenerate families; inexact kernels fail
+// cleanly.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <numeric>
+#include <random>
+#include <vector>
+
+#include "delaunay_support.hpp"
+#include "exidel/delaunay/certify.hpp"
+#include "exidel/delaunay/triangulate.hpp"
+
+namespace {
+
+using namespace exidel;
+using namespace exidel::delaunay;
+using exidel::test::EdgeSets;
+
+constexpr std::size_t max_points = 160;
+constexpr std::size_t max_points_gmp = 40;
+
+/// A strategy with its knobs, drawn so that strips are small enough to be merged many
+/// times (1, 2 and 3 mean the smallest non-collinear strips: pure divide and conquer).
+rc::Gen<Options> gen_options() {
+    return rc::gen::exec([] {
+        Options o;
+        o.strategy = *rc::gen::element(Strategy::automatic, Strategy::lexicographic,
+                                       Strategy::radial, Strategy::strips, Strategy::strips);
+        o.incircle = *rc::gen::element(InCirclePolicy::determinant, InCirclePolicy::cosine);
+        o.strip_points = *rc::gen::inRange<std::size_t>(1, 40);
+        o.threads = *rc::gen::inRange(1u, 3u);
+        return o;
+    });
+}
+
+std::string describe(const Options& o) {
+    return std::string(to_string(o.strategy)) + " strip_points " + std::to_string(o.strip_points) +
+           " threads " + std::to_string(o.threads) +
+           (o.incircle == InCirclePolicy::cosine ? " cosine" : " determinant");
+}
+
+template <class K>
+Result check_against_cgal(std::span<const Point2> pts, const K& kernel, const Options& o,
+                          const EdgeSets& oracle) {
+    const Result r = triangulate<Instrumentation::theorem1>(pts, kernel, o);
+    if (!r.ok()) RC_FAIL(describe(o) + ": " + r.failure->message);
+    const Certificate c = certify(pts, r.triangulation);
+    if (!c.ok()) RC_FAIL(describe(o) + ": certify: " + c.summary());
+    RC_ASSERT(r.strategy == choose_strategy(pts.size() - r.triangulation.duplicates.size(), o.strategy));
+    RC_ASSERT(r.counters.theorem1_violations == 0u);
+    RC_ASSERT(r.counters.theorem1_checks == r.counters.incircle_tests);
+    RC_ASSERT(r.counters.triangles_created - r.counters.triangles_destroyed ==
+              r.triangulation.triangle_count());
+    if (r.strips == 1) RC_ASSERT(r.counters.merge_cross_edges == 0u);
+    const EdgeSets ours = test::edge_sets(pts, r.triangulation);
+    RC_ASSERT(ours.collinear == oracle.collinear);
+    RC_ASSERT(ours.forced == oracle.forced);
+    if (ours.free_edges == 0) RC_ASSERT(ours.triangles == oracle.triangles);
+    return r;
+}
+
+RC_GTEST_PROP(DelaunayStrategies, AdaptiveEveryStrategyMatchesCgal, ()) {
+    const auto s = *test::gen_point_set(max_points);
+    const Options o = *gen_options();
+    RC_TAG(s.family);
+    RC_TAG(std::string(to_string(o.strategy)));
+    check_against_cgal(s.points, AdaptiveKernel{}, o, test::cgal_edge_sets(s.points));
+}
+
+RC_GTEST_PROP(DelaunayStrategies, GmpExactEveryStrategyMatchesCgal, ()) {
+    const auto s = *test::gen_point_set(max_points_gmp);
+    const Options o = *gen_options();
+    RC_TAG(std::string(to_string(o.strategy)));
+    check_against_cgal(s.points, GmpExactKernel{}, o, test::cgal_edge_sets(s.points));
+}
+
+// With no four points cocircular the Delaunay triangulation is unique: every strategy
+// must produce the same triangles (as sets; the arrays' order differs by strategy).
+RC_GTEST_PROP(DelaunayStrategies, StrategiesAgreeWhenNoFourPointsAreCocircular, ()) {
+    const auto s = *test::gen_point_set(max_points);
+    const EdgeSets oracle = test::cgal_edge_sets(s.points);
+    RC_PRE(oracle.free_edges == 0u);
+    std::set<test::Tri> first;
+    for (const Strategy st : {Strategy::lexicographic, Strategy::radial, Strategy::strips}) {
+        Options o;
+        o.strategy = st;
+        o.strip_points = 5;
+        const Result r = triangulate(s.points, AdaptiveKernel{}, o);
+        RC_ASSERT(r.ok());
+        const auto tris = test::edge_sets(s.points, r.triangulation).triangles;
+        if (st == Strategy::lexicographic) {
+            first = tris;
+        } else {
+            RC_ASSERT(tris == first);
+        }
+    }
+}
+
+// Which thread builds which strip or merges which pair never matters: the arrays are
+// identical, not only the triangulations.
+RC_GTEST_PROP(DelaunayStrategies, OneAndTwoThreadsGiveIdenticalArrays, ()) {
+    const auto s = *test::gen_point_set(600);
+    Options o;
+    o.strategy = Strategy::strips;
+    o.strip_points = *rc::gen::inRange<std::size_t>(1, 60);
+    o.threads = 1;
+    const Result one = triangulate(s.points, AdaptiveKernel{}, o);
+    o.threads = 2;
+    const Result two = triangulate(s.points, AdaptiveKernel{}, o);
+    if (!one.ok()) RC_FAIL(one.failure->message);
+    if (!two.ok()) RC_FAIL(two.failure->message);
+    RC_ASSERT(one.triangulation.triangles == two.triangulation.triangles);
+    RC_ASSERT(one.triangulation.halfedges == two.triangulation.halfedges);
+    RC_ASSERT(one.triangulation.hull == two.triangulation.hull);
+}
+
+// ---- merge-specific families -----------------------------------------------------------
+
+/// Points on a few vertical lines x = 0, 1, ... (integer y, repeats allowed): strips cut
+/// inside a column, so facing hulls are collinear and every merge starts on a common
+/// tangent through several collinear points.
+rc::Gen<std::vector<Point2>> gen_columns() {
+    return rc::gen::exec([] {
+        const int columns = *rc::gen::inRange(2, 5);
+        const std::size_t n = *rc::gen::inRange<std::size_t>(3, 80);
+        std::vector<Point2> p(n);
+        for (auto& q : p) {
+            q = {double(*rc::gen::inRange(0, columns)), double(*rc::gen::inRange(-20, 21))};
+        }
+        return p;
+    });
+}
+
+/// Lattice points on circles x^2 + y^2 = 25 and 625 (cocircular groups of 12 and 20),
+/// with a few random lattice points: strip cuts run through the circles, so the zipper
+/// meets cocircular cross-edge candidates.
+rc::Gen<std::vector<Point2>> gen_cocircular_across_cuts() {
+    return rc::gen::exec([] {
+        std::vector<Point2> p;
+        for (int r : {5, 25}) {
+            for (int x = -r; x <= r; ++x) {
+                for (int y = -r; y <= r; ++y) {
+                    if (x * x + y * y == r * r) p.push_back({double(x), double(y)});
+                }
+            }
+        }
+        const std::size_t extra = *rc::gen::inRange<std::size_t>(0, 30);
+        for (std::size_t i = 0; i < extra; ++i) {
+            p.push_back({double(*rc::gen::inRange(-30, 31)), double(*rc::gen::inRange(-30, 31))});
+        }
+        std::shuffle(p.begin(), p.end(), std::mt19937(*rc::gen::arbitrary<std::uint32_t>()));
+        return p;
+    });
+}
+
+void check_merges(const std::vector<Point2>& pts) {
+    const EdgeSets oracle = test::cgal_edge_sets(pts);
+    for (std::size_t sp : {1, 2, 3, 4, 7}) {
+        Options o;
+        o.strategy = Strategy::strips;
+        o.strip_points = sp;
+        check_against_cgal(pts, AdaptiveKernel{}, o, oracle);
+    }
+}
+
+RC_GTEST_PROP(DelaunayMerge, PointsOnAFewVerticalLines, ()) { check_merges(*gen_columns()); }
+
+RC_GTEST_PROP(DelaunayMerge, CocircularPointsSpanningCuts, ()) {
+    check_merges(*gen_cocircular_across_cuts());
+}
+
+// All points on two vertical lines: in lexicographic order the second line comes after
+// the whole first one, so every cut leaves a collinear right piece, which the merge does
+// not take (it needs triangles on both sides): the strips strategy then makes a single
+// strip. Three lines give real merges with collinear facing hulls.
+TEST(DelaunayMerge, AllPointsOnTwoAndThreeVerticalLines) {
+    for (const int lines : {2, 3}) {
+        std::vector<Point2> pts;
+        for (int y = 0; y < 20; ++y) {
+            for (int x = 0; x < lines; ++x) pts.push_back({double(x), double((y * (3 + x)) % 20)});
+        }
+        for (std::size_t sp : {1, 3, 10, 19, 21}) {
+            Options o;
+            o.strategy = Strategy::strips;
+            o.strip_points = sp;
+            const Result r = triangulate(pts, AdaptiveKernel{}, o);
+            ASSERT_TRUE(r.ok()) << r.failure->message;
+            EXPECT_TRUE(certify(pts, r.triangulation).ok()) << lines << " lines, " << sp;
+            if (lines == 2) {
+                EXPECT_EQ(r.strips, 1u);
+            } else if (sp < 20) {
+                EXPECT_GT(r.strips, 1u) << sp;  // cuts fall inside the columns
+            }
+        }
+    }
+}
+
+TEST(DelaunayMerge, StripsOfOneTwoAndThreePointsArePureDivideAndConquer) {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::vector<Point2> pts(300);
+    for (auto& p : pts) p = {u(rng), u(rng)};
+    for (std::size_t sp : {1, 2, 3}) {
+        Options o;
+        o.strategy = Strategy::strips;
+        o.strip_points = sp;
+        const Result r = triangulate<Instrumentation::counters>(pts, AdaptiveKernel{}, o);
+        ASSERT_TRUE(r.ok()) << r.failure->message;
+        EXPECT_TRUE(certify(pts, r.triangulation).ok());
+        // Random points: no three collinear, so every strip has exactly three points.
+        EXPECT_EQ(r.strips, 100u);
+        EXPECT_GT(r.counters.merge_cross_edges, 0u);
+    }
+}
+
+// Found while writing the merge: the zipper's base swung back along a chain edge
+// (cross edges 0-3, 1-3, 2-3, 2-4, 1-4, ...), so the triangle of the left strip behind
+// that edge was destroyed and the edge got a new triangle on both sides. The first
+// version linked it to the destroyed one.
+TEST(DelaunayMergeRegression, BaseSwingsBackAlongAChainEdge) {
+    const std::vector<Point2> pts{
+        {0x1.82a3befaddcbcp-1, 0x1.472f1f73724ap-1}, {0x1.81192cfe1cbcfp-1, 0x1.171621fc50d6ap-3},
+        {0x1.ce79451c9a6c3p-1, 0x1.814dc629c7f4fp-4}, {0x1.262e1432cba85p-1, 0x1.7dd645e8fadeep-2},
+        {0x1.187273d8bae7fp-2, 0x1.8fa32b81059dfp-2}, {0x1.95c23685de9fap-7, 0x1.0c232392c1217p-1}};
+    Options o;
+    o.strategy = Strategy::strips;
+    o.strip_points = 3;
+    const Result r = triangulate(pts, AdaptiveKernel{}, o);
+    ASSERT_TRUE(r.ok()) << r.failure->message;
+    EXPECT_EQ(r.strips, 2u);
+    EXPECT_TRUE(certify(pts, r.triangulation).ok()) << certify(pts, r.triangulation).summary();
+}
+
+std::vector<Point2> read_fixture(const std::string& name) {
+    std::ifstream in(std::string(EXIDEL_DELAUNAY_FIXTURES) + "/" + name);
+    EXPECT_TRUE(in) << name;
+    std::vector<Point2> pts;
+    for (std::string line; std::getline(in, line);) {
+        if (line.empty() || line[0] == '#') continue;
+        char* end = nullptr;
+        const double x = std::strtod(line.c_str(), &end);
+        const double y = std::strtod(end, nullptr);
+        pts.push_back({x, y});
+    }
+    return pts;
+}
+
+// Found by OneAndTwoThreadsGiveIdenticalArrays: the zipper's walk guard was 8 steps per
+// point; this exact merge needs about 9 (wide exponents make vertices of very high
+// degree). The guard now allows 64.
+TEST(DelaunayMergeRegression, WalkGuardWideExponents) {
+    const auto pts = read_fixture("merge_walk_guard_wide_exponents.xy");
+    ASSERT_EQ(pts.size(), 205u);
+    for (std::size_t sp : {7, 14, 30}) {
+        Options o;
+        o.strategy = Strategy::strips;
+        o.strip_points = sp;
+        const Result r = triangulate(pts, AdaptiveKernel{}, o);
+        ASSERT_TRUE(r.ok()) << r.failure->message;
+        EXPECT_TRUE(certify(pts, r.triangulation).ok());
+    }
+}
+
+// ---- radial order ------------------------------------------------------------------------
+
+// A sampled convex curve: the paper's order is quadratic on the branch it inserts towards
+// the vertex; radial order from delaunator's centre walks the curve from one end.
+TEST(DelaunayRadial, ParabolaTowardsItsVertexIsNotQuadratic) {
+    for (const std::size_t n : {1000u, 4000u}) {
+        std::vector<Point2> pts(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            const double x = -static_cast<double>(n - i);
+            pts[i] = {x, x * x};
+        }
+        Options o;
+        o.strategy = Strategy::radial;
+        const Result r = triangulate<Instrumentation::counters>(pts, AdaptiveKernel{}, o);
+        ASSERT_TRUE(r.ok());
+        EXPECT_TRUE(certify(pts, r.triangulation).ok());
+        const double flips = static_cast<double>(r.counters.flips()) / static_cast<double>(n);
+        std::printf("parabola n = %zu: radial %.2f flips per point\n", n, flips);
+        EXPECT_LT(flips, 4.0);  // lexicographic: (n - 5) / 2
+    }
+}
+
+// Many exact distance ties: an integer grid around its centre. The order must be exact
+// for the walk to stay external; the certificate checks the whole run.
+TEST(DelaunayRadial, GridWithManyEqualDistances) {
+    std::vector<Point2> pts;
+    for (int x = -15; x <= 15; ++x) {
+        for (int y = -15; y <= 15; ++y) pts.push_back({double(x), double(y)});
+    }
+    for (const Strategy st : {Strategy::radial, Strategy::strips}) {
+        Options o;
+        o.strategy = st;
+        o.strip_points = 40;
+        const Result r = triangulate(pts, AdaptiveKernel{}, o);
+        ASSERT_TRUE(r.ok()) << r.failure->message;
+        EXPECT_TRUE(certify(pts, r.triangulation).ok());
+    }
+}
+
+/// The adaptive kernel with its distance comparison reversed: the radial order then
+/// inserts the farthest points first, and a later point lands inside the hull.
+struct ReversedDistanceKernel {
+    static constexpr bool is_exact = false;
+    static std::string name() { return "reversed-distance"; }
+    Sign orient2d(Point2 a, Point2 b, Point2 c) const { return AdaptiveKernel::orient2d(a, b, c); }
+    Sign incircle(Point2 a, Point2 b, Point2 c, Point2 d) const {
+        return AdaptiveKernel::incircle(a, b, c, d);
+    }
+    Sign incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d) const {
+        return AdaptiveKernel::incircle_cosine(a, b, c, d);
+    }
+    Sign compare_distance(Point2 c, Point2 p, Point2 q) const {
+        return AdaptiveKernel::compare_distance(c, q, p);
+    }
+};
+static_assert(PredicateKernel<ReversedDistanceKernel>);
+
+TEST(DelaunayRadial, AWrongDistanceComparisonIsDetectedNotMishandled) {
+    // Keys are exact (small integers), so every pair is decided by the key sort except
+    // ties; make all distances tie (a circle of lattice points plus its centre) so the
+    // lying predicate orders them all.
+    std::vector<Point2> pts{{0, 0}};
+    for (int x = -5; x <= 5; ++x) {
+        for (int y = -5; y <= 5; ++y) {
+            if (x * x + y * y == 25) pts.push_back({double(x), double(y)});
+        }
+    }
+    pts.push_back({0.5, 0.25});  // a second inner point, so the ring is not all ties
+    Options o;
+    o.strategy = Strategy::radial;
+    const Result r = triangulate(pts, ReversedDistanceKernel{}, o);
+    // Either the run stops with a typed failure, or what it returns is certified; it
+    // never returns silent garbage.
+    if (r.ok()) {
+        EXPECT_TRUE(certify(pts, r.triangulation).ok());
+    } else {
+        EXPECT_FALSE(r.failure->message.empty());
+        std::printf("reversed distance: %s\n", r.failure->message.c_str());
+    }
+}
+
+// ---- inexact kernels --------------------------------------------------------------------
+
+// The double kernel under every strategy: wrong answers are allowed, crashes, hangs and
+// arrays pointing outside themselves are not. Outcomes printed, not asserted.
+TEST(DelaunayStrategiesInexact, DoubleKernelNeverCrashesUnderAnyStrategy) {
+    std::map<std::string, std::map<std::string, std::size_t>> outcomes;  // strategy -> outcome
+    const bool passed = rc::check("double kernel, every strategy", [&] {
+        const auto s = *test::gen_point_set(200);
+        const Options o = *gen_options();
+        const Result r = triangulate(s.points, DoubleKernel{}, o);
+        auto& counts = outcomes[std::string(to_string(o.strategy))];
+        if (!r.ok()) {
+            RC_ASSERT(r.failure->kind != FailureKind::non_finite_input);
+            RC_ASSERT(!r.failure->message.empty());
+            ++counts[std::string(to_string(r.failure->kind))];
+            return;
+        }
+        const Certificate c = certify(s.points, r.triangulation);
+        RC_ASSERT(!c.has(FindingKind::bad_shape));
+        RC_ASSERT(!c.has(FindingKind::index_out_of_range));
+        ++counts[c.ok() ? "certified" : "wrong"];
+    });
+    for (const auto& [strategy, counts] : outcomes) {
+        std::printf("double kernel, %s:", strategy.c_str());
+        for (const auto& [what, k] : counts) std::printf(" %s %zu", what.c_str(), k);
+        std::printf("\n");
+    }
+    EXPECT_TRUE(passed);
+}
+
+}  // namespace
