@@ -51,10 +51,9 @@
 //     10^5 would take minutes, 10^6 hours), never at 10^5 or 10^6;
 //   - lexicographic on the 1000 x 1000 grid: about s/2 = 500 flips per point, minutes
 //     per run, only with --exidel_slow;
-//   - radial on both parabolas at 10^6: few flips, but finding a visible hull edge from
-//     the angular hash costs thousands of orientations per point on a convex curve
-//     (about 3,000 at 10^5 and 12,000 at 2 x 10^5: 6 s and 40 s; 10^6 would take
-//     many minutes), only with --exidel_slow. Strips bound that walk by the strip size.
+//   (radial on the parabolas at 10^6 used to be here too: the walk to a visible hull
+//   edge went round the curve, thousands of orientations per point. The hash now spans
+//   the points' own angular range and the walk goes both ways: 1.7 per point.)
 // The kernel comparison (double, exact) runs on uniform only, exact at 10^4.
 // --exidel_huge adds 10^7 uniform (every strategy; several GB of memory).
 // Measured on the 2-core development machine under a load of 3-4 (another build
@@ -369,10 +368,9 @@ int main(int argc, char** argv) {
         const std::string_view name = in;
         for (std::size_t n : {100'000u, 1'000'000u}) {
             const bool big = n == 1'000'000;
-            const bool parabola = name == "parabola-asc" || name == "parabola-desc";
             const bool lexicographic =
                 name != "parabola-asc" && (name != "grid" || !big || slow);
-            add(in, n, lexicographic, !(parabola && big) || slow);
+            add(in, n, lexicographic, true);
             if (name == "uniform") {
                 const std::string prefix = "tri/uniform/" + std::to_string(n) + "/";
                 add_exidel<DoubleKernel>(prefix, "double", in, n, Strategy::automatic, 1);

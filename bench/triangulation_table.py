@@ -41,8 +41,6 @@ def capped(inp, n, impl):
         return "quadratic here (n/2 flips/pt): capped at n = 8192"
     if impl == "adaptive-lexicographic-t1" and inp == "grid" and n >= 1_000_000:
         return "quadratic here: only with --exidel_slow"
-    if impl == "adaptive-radial-t1" and inp.startswith("parabola") and n >= 1_000_000:
-        return "quadratic hull search here: only with --exidel_slow"
     return None
 
 

@@ -32,6 +32,9 @@ Input (FILE, or standard input when no file or '-' is given), one query per line
       -(|a-c||b-c| (a-d).(b-d) + |a-d||b-d| (a-c).(b-c)). When c and d are strictly on
       opposite sides of line ab it equals orient2d(a,b,c) * incircle(a,b,c,d); otherwise
       it is still printed but is not an in-circle answer.
+  compare_distance cx cy px py qx qy
+      sign of |p - c|^2 - |q - c|^2: 1 iff p is strictly farther from c than q
+      (the radial insertion order's comparison).
 Coordinates: decimal (0.1, -2.5e-300) or C99 hexadecimal floats (0x1.8p-3,
 -0X1P+4), each rounded to the nearest double (a value below the smallest subnormal
 rounds to zero). Tokens are separated by spaces or tabs. Everything from a '#' to the

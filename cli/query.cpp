@@ -23,7 +23,8 @@ std::vector<std::string_view> split_blanks(std::string_view s) {
 }
 
 std::optional<Predicate> predicate_from_name(std::string_view name) {
-    for (Predicate p : {Predicate::orient2d, Predicate::incircle, Predicate::incircle_cosine}) {
+    for (Predicate p : {Predicate::orient2d, Predicate::incircle, Predicate::incircle_cosine,
+                        Predicate::compare_distance}) {
         if (predicate_name(p) == name) return p;
     }
     return std::nullopt;
@@ -36,11 +37,14 @@ std::string_view predicate_name(Predicate p) noexcept {
         case Predicate::orient2d: return "orient2d";
         case Predicate::incircle: return "incircle";
         case Predicate::incircle_cosine: return "incircle_cosine";
+        case Predicate::compare_distance: return "compare_distance";
     }
     return "?";
 }
 
-int point_count(Predicate p) noexcept { return p == Predicate::orient2d ? 3 : 4; }
+int point_count(Predicate p) noexcept {
+    return p == Predicate::orient2d || p == Predicate::compare_distance ? 3 : 4;
+}
 
 ParsedLine parse_query_line(std::string_view line) {
     ParsedLine out;
@@ -57,7 +61,7 @@ ParsedLine parse_query_line(std::string_view line) {
     const std::optional<Predicate> predicate = predicate_from_name(tokens[0]);
     if (!predicate) {
         return fail("unknown predicate " + quoted(tokens[0]) +
-                    " (expected orient2d, incircle or incircle_cosine)");
+                    " (expected orient2d, incircle, incircle_cosine or compare_distance)");
     }
     const std::size_t expected = 2 * static_cast<std::size_t>(point_count(*predicate));
     if (tokens.size() - 1 != expected) {

@@ -4,6 +4,7 @@
 //   orient2d        ax ay bx by cx cy
 //   incircle        ax ay bx by cx cy dx dy
 //   incircle_cosine ax ay bx by cx cy dx dy
+//   compare_distance cx cy px py qx qy     (sign of |p - c|^2 - |q - c|^2)
 // Tokens are separated by blanks (space, tab, CR, VT, FF). Everything from the first '#'
 // to the end of the line is a comment; a line that is blank after removing the comment
 // holds no query. Coordinates are decimal ("0.1", "-1e-300") or C99 hexadecimal floats
@@ -21,10 +22,10 @@
 
 namespace exidel::cli {
 
-enum class Predicate { orient2d, incircle, incircle_cosine };
+enum class Predicate { orient2d, incircle, incircle_cosine, compare_distance };
 
 std::string_view predicate_name(Predicate p) noexcept;
-/// 3 for orient2d, 4 for the in-circle tests.
+/// 3 for orient2d and compare_distance, 4 for the in-circle tests.
 int point_count(Predicate p) noexcept;
 
 struct Query {
@@ -54,6 +55,7 @@ Sign evaluate(const K& k, const Query& q) {
         case Predicate::orient2d: return k.orient2d(p[0], p[1], p[2]);
         case Predicate::incircle: return k.incircle(p[0], p[1], p[2], p[3]);
         case Predicate::incircle_cosine: return k.incircle_cosine(p[0], p[1], p[2], p[3]);
+        case Predicate::compare_distance: return k.compare_distance(p[0], p[1], p[2]);
     }
     return Sign::zero;  // unreachable: every enumerator is handled above
 }

@@ -74,8 +74,10 @@ TEST(ExidelBinary, SignsCommentsAndHexFloats) {
         "incircle 0 0 1 0 0 1 1 1\n"
         "incircle 0 0 1 0 0 1 2 2\r\n"
         "incircle_cosine 0 0 1 0 0.5 1 0.5 -0.1\n"
-        "incircle_cosine 0 0 1 0 0.5 1 0.5 -2\n";
-    const std::string expected = "1\n-1\n0\n1\n0\n-1\n1\n-1\n";
+        "incircle_cosine 0 0 1 0 0.5 1 0.5 -2\n"
+        "compare_distance 0 0 3 4 5 0   # equally far: 0\n"
+        "compare_distance 0.5 0.5 0x1p-20 0 1 1\n";
+    const std::string expected = "1\n-1\n0\n1\n0\n-1\n1\n-1\n0\n-1\n";
     for (const std::string& k : all_kernels) {
         const RunResult r = run("predicate --kernel " + k, input);
         EXPECT_EQ(r.status, 0) << k << ": " << r.err;

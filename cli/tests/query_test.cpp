@@ -109,6 +109,15 @@ TEST(ParseQueryLine, InCircleBoth) {
     }
 }
 
+TEST(ParseQueryLine, CompareDistanceTakesThreePoints) {
+    const ParsedLine p = parse_query_line("compare_distance 1 2 3 4 5 6");
+    ASSERT_EQ(p.kind, ParsedLine::Kind::query) << p.error;
+    EXPECT_EQ(p.query.predicate, Predicate::compare_distance);
+    EXPECT_EQ(p.query.points[2], (Point2{5, 6}));
+    EXPECT_NE(parse_query_line("compare_distance 1 2 3 4 5 6 7 8").error.find("takes 6"),
+              std::string::npos);
+}
+
 TEST(ParseQueryLine, Errors) {
     const auto error_of = [](std::string_view line) {
         const ParsedLine p = parse_query_line(line);
