@@ -170,25 +170,18 @@ private:
         return checked({f.v, m_.triangles[prev_halfedge(static_cast<std::size_t>(f.in))],
                         m_.halfedges[n], static_cast<std::int32_t>(n)});
     }
-    // The next neighbour whose edge is not deleted.
-    std::optional<Fan> live_ccw(Fan f) {
+    // The next neighbour (counter-clockwise, or clockwise) whose edge is not deleted.
+    std::optional<Fan> live(Fan f, bool clockwise) {
         do {
             if (!spend()) return std::nullopt;
-            const auto g = ccw(f);
+            const auto g = clockwise ? cw(f) : ccw(f);
             if (!g) return std::nullopt;
             f = *g;
         } while (is_gone(f));
         return f;
     }
-    std::optional<Fan> live_cw(Fan f) {
-        do {
-            if (!spend()) return std::nullopt;
-            const auto g = cw(f);
-            if (!g) return std::nullopt;
-            f = *g;
-        } while (is_gone(f));
-        return f;
-    }
+    std::optional<Fan> live_ccw(const Fan& f) { return live(f, false); }
+    std::optional<Fan> live_cw(const Fan& f) { return live(f, true); }
 
     std::optional<Failure> zip() {
         const auto& next = m_.hull_next;
