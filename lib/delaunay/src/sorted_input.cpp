@@ -6,6 +6,7 @@
 #include <string>
 
 #include "exidel/delaunay/detail/builder.hpp"
+#include "exidel/delaunay/detail/radix.hpp"
 #include "exidel/delaunay/result.hpp"
 
 namespace exidel::delaunay {
@@ -62,11 +63,6 @@ bool finite(double v) noexcept {
     return (std::bit_cast<std::uint64_t>(v) & exponent) != exponent;
 }
 
-struct Keyed {
-    Point2 p;
-    std::uint32_t index;
-};
-
 }  // namespace
 
 std::optional<Failure> sort_and_dedupe(std::span<const Point2> input, SortedInput& out) {
@@ -81,30 +77,45 @@ std::optional<Failure> sort_and_dedupe(std::span<const Point2> input, SortedInpu
                        std::to_string(input.size()) + " points, at most " +
                            std::to_string(max_points) + " are supported"};
     }
-    std::vector<Keyed> keyed(input.size());
+    // Lexicographic order, ties by index (so the first occurrence of a repeated point
+    // comes first): a stable radix sort by x of records in index order, then each run of
+    // equal x (rare but for grids) sorted by (y, index).
+    std::vector<KeyIndex> sorted(input.size());
     for (std::size_t i = 0; i < input.size(); ++i) {
-        keyed[i] = {input[i], static_cast<std::uint32_t>(i)};
+        sorted[i] = {order_key(input[i].x), static_cast<std::uint32_t>(i)};
     }
-    // The index breaks ties, so the first occurrence of a repeated point comes first.
-    std::sort(keyed.begin(), keyed.end(), [](const Keyed& a, const Keyed& b) {
-        if (a.p.x != b.p.x) return a.p.x < b.p.x;
-        if (a.p.y != b.p.y) return a.p.y < b.p.y;
-        return a.index < b.index;
-    });
+    radix_sort(sorted);
+    for (std::size_t lo = 0; lo < sorted.size();) {
+        std::size_t hi = lo + 1;
+        while (hi < sorted.size() && sorted[hi].key == sorted[lo].key) ++hi;
+        if (hi - lo > 1) {
+            std::sort(sorted.begin() + static_cast<std::ptrdiff_t>(lo),
+                      sorted.begin() + static_cast<std::ptrdiff_t>(hi),
+                      [&](const KeyIndex& a, const KeyIndex& b) {
+                          const double ya = input[a.index].y, yb = input[b.index].y;
+                          return ya != yb ? ya < yb : a.index < b.index;
+                      });
+        }
+        lo = hi;
+    }
     out.points.clear();
     out.input_of.clear();
     out.duplicates.clear();
     out.vertex_of_input.assign(input.size(), 0);
-    for (std::size_t j = 0; j < keyed.size(); ++j) {
+    out.points.reserve(input.size());
+    out.input_of.reserve(input.size());
+    for (std::size_t j = 0; j < sorted.size(); ++j) {
+        const std::uint32_t i = sorted[j].index;
+        const Point2 p = input[i];
         // == treats -0.0 and +0.0 as the same point, as every predicate does.
-        if (j > 0 && keyed[j].p == keyed[j - 1].p) {
-            out.vertex_of_input[keyed[j].index] = out.input_of.back();
-            out.duplicates.push_back(keyed[j].index);
+        if (j > 0 && p == input[sorted[j - 1].index]) {
+            out.vertex_of_input[i] = out.input_of.back();
+            out.duplicates.push_back(i);
             continue;
         }
-        out.points.push_back(keyed[j].p);
-        out.input_of.push_back(keyed[j].index);
-        out.vertex_of_input[keyed[j].index] = keyed[j].index;
+        out.points.push_back(p);
+        out.input_of.push_back(i);
+        out.vertex_of_input[i] = i;
     }
     std::sort(out.duplicates.begin(), out.duplicates.end());
     return std::nullopt;

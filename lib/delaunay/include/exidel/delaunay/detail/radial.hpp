@@ -17,12 +17,14 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <span>
 #include <vector>
 
+#include "exidel/delaunay/detail/radix.hpp"
 #include "exidel/predicates/constants.hpp"
 #include "exidel/predicates/kernel.hpp"
 #include "exidel/predicates/types.hpp"
@@ -165,19 +167,23 @@ bool guess_order(std::span<Keyed> run, std::span<const Point2> points, Point2 ce
 template <PredicateKernel K>
 std::vector<std::uint32_t> radial_order(std::span<const Point2> points, Point2 centre,
                                         const K& kernel) {
+    // Sorted by the key's bits, which order non-negative doubles (+inf included) as
+    // numbers; the radix sort is stable, so equal keys stay in position order.
     struct Keyed {
         double d;
         std::uint32_t i;
     };
-    std::vector<Keyed> keyed(points.size());
+    std::vector<KeyIndex> by_key(points.size());
     for (std::size_t i = 0; i < points.size(); ++i) {
         const double dx = points[i].x - centre.x, dy = points[i].y - centre.y;
-        // May be +inf (overflow), never NaN: the coordinates are finite.
-        keyed[i] = {dx * dx + dy * dy, static_cast<std::uint32_t>(i)};
+        // May be +inf (overflow), never NaN (the coordinates are finite) nor negative.
+        by_key[i] = {std::bit_cast<std::uint64_t>(dx * dx + dy * dy), static_cast<std::uint32_t>(i)};
     }
-    std::sort(keyed.begin(), keyed.end(), [](const Keyed& a, const Keyed& b) {
-        return a.d < b.d || (a.d == b.d && a.i < b.i);
-    });
+    radix_sort(by_key);
+    std::vector<Keyed> keyed(points.size());
+    for (std::size_t j = 0; j < keyed.size(); ++j) {
+        keyed[j] = {std::bit_cast<double>(by_key[j].key), by_key[j].index};
+    }
     constexpr double r = bounds::radial_key_rel;
     constexpr double below = 1 - 4 * r, above = 1 + 4 * r;
     static_assert(r >= 4 * bounds::epsilon && r <= 1.0 / 3, "the separation argument above");
