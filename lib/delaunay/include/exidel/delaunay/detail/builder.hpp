@@ -213,7 +213,10 @@ private:
         m_->hull_size = k + 1;
         last_ = apex;
         if constexpr (O == Order::radial) {
-            for (std::uint32_t v = 0; v <= apex; ++v) hash_[hash_key(pts_[v])] = v;
+            for (std::uint32_t v = 0; v <= apex; ++v) {
+                bucket_[v] = static_cast<std::uint32_t>(hash_key(pts_[v]));
+                hash_[bucket_[v]] = v;
+            }
         }
     }
 
@@ -241,6 +244,7 @@ private:
     void prepare_hash() {
         hash_.assign(std::max<std::size_t>(16, static_cast<std::size_t>(std::sqrt(double(pts_.size())))),
                      dead);
+        bucket_.assign(pts_.size(), 0);
         const Point2 box = bounding_box_centre(pts_);
         const double ax = box.x - centre_.x, ay = box.y - centre_.y;
         const double len = std::abs(ax) + std::abs(ay);
@@ -270,10 +274,9 @@ private:
     // point lands in the same bucket). One exists because p is outside the hull (see the
     // order's argument above); with an inexact kernel the walk may pass every edge without
     // finding one, and that is reported, not guessed.
-    std::optional<std::uint32_t> visible_edge(Point2 p) {
+    std::optional<std::uint32_t> visible_edge(Point2 p, std::size_t key) {
         const auto& next = m_->hull_next;
         const auto& prev = m_->hull_prev;
-        const std::size_t key = hash_key(p);
         std::uint32_t start = dead;
         for (std::size_t j = 0; j < hash_.size(); ++j) {
             const std::uint32_t v = hash_[(key + j) % hash_.size()];
@@ -310,7 +313,8 @@ private:
         std::size_t visible = 0;
         std::uint32_t upper = from;
         if constexpr (O == Order::radial) {
-            const auto e = visible_edge(p);
+            bucket_[i] = static_cast<std::uint32_t>(hash_key(p));
+            const auto e = visible_edge(p, bucket_[i]);
             if (!e) {
                 return fail(FailureKind::point_inside_hull, i,
                             "no edge of the current hull is visible from the point");
@@ -431,10 +435,10 @@ private:
             // curve the tangent is often the opposite end of the arc), and then every
             // later point in that bucket walks the whole chain.
             for (const std::uint32_t v : {lower, upper}) {
-                std::uint32_t& slot = hash_[hash_key(pts_[v])];
+                std::uint32_t& slot = hash_[bucket_[v]];
                 if (slot == dead || next[slot] == dead) slot = v;
             }
-            hash_[hash_key(p)] = i;
+            hash_[bucket_[i]] = i;
         }
         return std::nullopt;
     }
@@ -449,6 +453,7 @@ private:
     std::vector<std::uint32_t> border_vertex_;
     std::vector<std::int32_t> border_behind_;
     std::vector<std::uint32_t> hash_;  // radial: bucket -> a hull vertex (or dead)
+    std::vector<std::uint32_t> bucket_;  // radial: inserted vertex -> its bucket
     double axis_x_ = 1, axis_y_ = 0;   // radial: the direction the hash angle starts from
     double angle_lo_ = 0, angle_scale_ = 0;
     std::uint32_t last_ = 0;
