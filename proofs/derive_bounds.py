@@ -4,8 +4,10 @@ into the smallest safe value of every constant of predicates/ (bounds.md writes 
 combination; this script is that text as exact rational arithmetic).
 
 Usage: derive_bounds.py GAPPA OUTPUT
-Writes OUTPUT with one line per claim:  name kind p/q  (exact rational)
+Writes OUTPUT with one line per claim:  name kind p/q [if=CONDITION]  (exact rational)
   kind `min`: the code's value must be >= p/q;  kind `max`: it must be <= p/q.
+  if=CONDITION: the claim is proven only if the named unproven statement holds
+  (bounds.md names it; no claim is conditional today).
 Exit code non-zero when Gappa fails to prove a goal or prints something unexpected.
 """
 import re
@@ -55,6 +57,10 @@ def main():
     eps_exact = magnitude(rnd, "float<53,-1074,ne>(x) -/ x")
     res = run_gappa(gappa, "rounding_result.g")
     eps_result = max(magnitude(res, "(xp - zp) / zp"), magnitude(res, "(xn - zn) / zn"))
+    # R2's certificate is coq/rounding_result.v, which proves the bound 2^-53: a tighter
+    # value from Gappa would be used without a certificate.
+    if eps_result < Q(1, 2**53):
+        sys.exit(f"rounding_result.g: {eps_result} is below the 2^-53 of coq/rounding_result.v")
     e = max(eps_exact, eps_result)  # one rounding, either way round
     under = run_gappa(gappa, "underflow.g")
     eta = max(magnitude(under, "p - a * b"), magnitude(under, "s - (a + b)"))
@@ -163,12 +169,18 @@ def main():
 
     # c for the two classes of expansions the kernel estimates (bounds.md#expansion-estimate):
     # nonadjacent (orient2d's Two_Two_Diff, 4 components): 1 + 4/3;
-    # strongly nonoverlapping (incircle's fin, at most 96 components): 1 + 33/7.
+    # class W (at most 96 components): 1 + 33/7. Incircle's fin is not in W by any theorem
+    # (Shewchuk's Theorem 13, which would make it strongly nonoverlapping, is false); the
+    # code checks it at run time (expansion.hpp, in_class_w) and goes to the exact stage
+    # otherwise, so the claims below that use est_incircle are unconditional.
     est_orient = estimate_rel(Q(7, 3), 4)
     est_incircle = estimate_rel(Q(40, 7), 96)
 
-    # Lemma G (bounds.md#lemma-g-deciding-against-a-rounded-bound): |d| > fl(fl(y1) + fl(y2)) implies |d| > (y1 + y2) / g2.
+    # Lemma G (bounds.md#lemma-g-deciding-against-a-rounded-bound): |d| > fl(fl(y1) + fl(y2))
+    # implies |d| > (y1 + y2) / g2. Its case F >= 2^-1021 uses 2 eta <= eps F.
     g2 = (1 + e) ** 2 + e
+    if 2 * eta > e * Q(2) ** -1021:
+        sys.exit("lemma G: 2 eta exceeds eps 2^-1021")
 
     # orient2d stage B: |B - Dx| <= (2e + e^2)(|pq| + |rs|) <= (2e + e^2)(1+e)^2 T; the
     # estimate errs by est_orient |det|; lemma G: |det| > fl(ccw_b T) gives
@@ -180,9 +192,10 @@ def main():
     # e |det_C| absorbed: g2 / (1-e).
     tail_terms = ((delta(2) + e * (1 + e) ** 2) * 2 * e + e * e) * (1 + e) ** 2
     claims.append(("ccw_c", "min", tail_terms * g2 / (1 - e)))
-    # result_err covers the estimate of stage B in both predicates' stage C.
-    claims.append(("result_err", "min",
-                   max(est_orient, est_incircle) * g2 / (1 - e)))
+    # result_err covers the estimate of stage B in both predicates' stage C (incircle's
+    # requirement is the larger).
+    claims.append(("result_err", "min", est_orient * g2 / (1 - e)))
+    claims.append(("result_err", "min", est_incircle * g2 / (1 - e)))
     # incircle stage B: each of the 12 monomials of four differences errs by d_4 relative to
     # its value in the rounded differences, whose sum of magnitudes is at most (1+e)^7
     # times the computed permanent; lemma G one rounding; the estimate est_incircle |det|.
@@ -229,12 +242,15 @@ def main():
 
     with open(output, "w") as f:
         f.write("# Proven bounds, written by proofs/derive_bounds.py from Gappa's output.\n")
-        for name, kind, value in claims:
-            f.write(f"{name} {kind} {value.numerator}/{value.denominator}\n")
-    for name, kind, value in claims:
+        f.write("# A trailing if=CONDITION: proven only if that statement (bounds.md) holds.\n")
+        for name, kind, value, *condition in claims:
+            tail = "".join(f" if={c}" for c in condition)
+            f.write(f"{name} {kind} {value.numerator}/{value.denominator}{tail}\n")
+    for name, kind, value, *condition in claims:
         unit = "eps" if value < Q(1, 2**40) and value > Q(1, 2**70) else ""
         shown = float(value / Q(1, 2**53)) if unit else float(value)
-        print(f"{name:20s} {kind} {shown!r} {unit}")
+        tail = "".join(f" (if {c})" for c in condition)
+        print(f"{name:20s} {kind} {shown!r} {unit}{tail}")
 
 
 if __name__ == "__main__":

@@ -189,6 +189,14 @@ int incircle_of_rounded_differences(double adx, double ady, double bdx, double b
     // lengths 4, 8, 16, 32, 64, 96, on the stack).
     double fin[96];
     const int fin_length = incircle_of_rounded_differences(adx, ady, bdx, bdy, cdx, cdy, fin);
+    // Stages B and C trust the estimate of fin only as far as lemma E bounds it, which
+    // needs fin in class W; Fast-Expansion-Sum does not guarantee that (Shewchuk's
+    // Theorem 13 is false: proofs/bounds.md#expansion-estimate), so it is checked. Outside
+    // W (never seen in sampling, bounds.md), straight to the exact stage.
+    if (!detail::in_class_w(fin_length, fin)) {
+        stage = AdaptiveStage::exact;
+        return detail::incircle_formula<Expansion>(a, b, c, d, lift_expansion);
+    }
     double det = detail::expansion_estimate(fin_length, fin);
     double errbound = eb::icc_b * permanent;
     stage = AdaptiveStage::stage_b;
@@ -202,7 +210,7 @@ int incircle_of_rounded_differences(double adx, double ady, double bdx, double b
     const double cdytail = detail::two_diff_tail(c.y, d.y, cdy);
     if (adxtail == 0 && bdxtail == 0 && cdxtail == 0 && adytail == 0 && bdytail == 0 &&
         cdytail == 0) {
-        return detail::expansion_sign(fin_length, fin);
+        return detail::checked_sign(fin_length, fin);
     }
 
     // Stage C: Shewchuk's first-order tail correction.
@@ -413,7 +421,7 @@ int expansion_square(double h, double l, double* out /* [8] */) {
     const int nq = detail::expansion_sum(nqx, qx2, nqy, qy2, qlen);
     for (int i = 0; i < nq; ++i) qlen[i] = -qlen[i];
     stage = AdaptiveStage::exact;
-    return detail::expansion_sign(detail::expansion_sum(np, plen, nq, qlen, det), det);
+    return detail::checked_sign(detail::expansion_sum(np, plen, nq, qlen, det), det);
 }
 
 // Orient2d's filter with the squared lengths as the two terms (constants.hpp: dist_a).

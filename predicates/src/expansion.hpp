@@ -1,19 +1,31 @@
 // exidel (private): error-free transformations and expansion arithmetic.
 //
-// An expansion is a sum of doubles, stored by increasing magnitude, nonoverlapping, with
-// zero components eliminated; its sign is the sign of its largest component (Shewchuk
-// 1997, Section 2). Every operation below is exact provided the floating-point
-// environment is IEEE binary64, round to nearest, no contraction (this header is compiled
-// only in the library's own translation units, with -ffp-contract=off), and no
-// intermediate overflows or underflows; the adaptive kernel checks the last condition on
-// its input before it gets here (adaptive.cpp, `expansion_safe`).
+// An expansion is a sum of doubles, stored by increasing magnitude, with zero components
+// eliminated (Shewchuk 1997, Section 2). Every operation below is exact, whatever the
+// structure of its operands (Two-Sum needs no ordering, Two-Product none), provided the
+// floating-point environment is IEEE binary64, round to nearest, no contraction (this
+// header is compiled only in the library's own translation units, with -ffp-contract=off),
+// and no intermediate overflows or underflows; the adaptive kernel checks the last
+// condition on its input before it gets here (adaptive.cpp, `expansion_safe`).
+//
+// What is NOT taken on trust is the structure of a result: Shewchuk's Theorem 13 (Fast-
+// Expansion-Sum keeps strongly nonoverlapping operands strongly nonoverlapping) is false
+// (proofs/bounds.md#expansion-estimate has a counterexample), and what it was to guarantee
+// is what the kernel relies on: that the largest component gives the sign, and that the
+// estimate errs by at most lemma E's bound. So the sign of a Fast-Expansion-Sum result is
+// read only after `nonoverlapping` has checked it (`checked_sign`), with an exact integer
+// sum as the fallback, and an estimate is trusted only after `in_class_w` has checked the
+// class lemma E is proved for.
 #pragma once
 
+#include <bit>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <utility>
 
 #include <boost/container/small_vector.hpp>
+#include <boost/multiprecision/cpp_int.hpp>
 
 #include "exidel/predicates/types.hpp"
 #include "fp_hygiene.hpp"
@@ -142,8 +154,97 @@ inline int expansion_scale(int elen, const double* e, double b, double* h) {
     return n;
 }
 
-/// Sign of an expansion of length n (its largest component is the last one).
-inline Sign expansion_sign(int n, const double* e) { return n == 0 ? Sign::zero : sign_of(e[n - 1]); }
+// ---- Structure checks ----------------------------------------------------------------
+// Decided on the bits, so they do not depend on the caller's DAZ or rounding mode.
+
+/// The positions of the lowest and the highest nonzero bit of a finite v != 0:
+/// |v| = sum of some 2^k, lo <= k <= hi, with 2^lo and 2^hi among them.
+struct BitRange {
+    int lo, hi;
+};
+inline BitRange bit_range(double v) {
+    const std::uint64_t bits = std::bit_cast<std::uint64_t>(v) & 0x7fff'ffff'ffff'ffffull;
+    const auto field = static_cast<int>(bits >> 52);
+    std::uint64_t m = bits & ((std::uint64_t{1} << 52) - 1);
+    int e = -1074;  // |v| = m 2^e
+    if (field != 0) {
+        m |= std::uint64_t{1} << 52;
+        e = field - 1075;
+    }
+    return {e + std::countr_zero(m), e + 63 - std::countl_zero(m)};
+}
+
+/// x[0..n) (no zeros) pairwise nonoverlapping: each component's highest bit is below the
+/// next one's lowest. Then |x[0] + ... + x[k-1]| < 2^lo(x[k]) <= |x[k]| for every k
+/// (induction: the sum stays below 2^(hi(x[k-1]) + 1)), so the last component gives the
+/// sign of the sum.
+inline bool nonoverlapping(int n, const double* x) {
+    for (int k = 1; k < n; ++k) {
+        if (bit_range(x[k - 1]).hi >= bit_range(x[k]).lo) return false;
+    }
+    return true;
+}
+
+/// x[0..n) (no zeros) in the class W of proofs/bounds.md#expansion-estimate, for which
+/// lemma E bounds the error of expansion_estimate: pairwise nonoverlapping, no component
+/// adjacent to two others (neighbours are adjacent when the smaller's highest bit is just
+/// below the larger's lowest), and the smaller of an adjacent pair a power of two.
+inline bool in_class_w(int n, const double* x) {
+    if (n == 0) return true;
+    BitRange below = bit_range(x[0]);
+    bool below_adjacent = false;  // x[k-2] and x[k-1] are adjacent
+    for (int k = 1; k < n; ++k) {
+        const BitRange r = bit_range(x[k]);
+        if (below.hi >= r.lo) return false;
+        const bool adjacent = below.hi + 1 == r.lo;
+        if (adjacent && (below_adjacent || below.lo != below.hi)) return false;
+        below_adjacent = adjacent;
+        below = r;
+    }
+    return true;
+}
+
+/// The sign of x[0] + ... + x[n-1] (any doubles), by exact integer arithmetic: every
+/// double is m 2^e with |m| < 2^53, so the sum is an integer times 2^(smallest e).
+inline Sign exact_sign_of_sum(int n, const double* x) {
+    auto decompose = [](double v, std::int64_t& m, int& e) {
+        const std::uint64_t bits = std::bit_cast<std::uint64_t>(v);
+        const auto field = static_cast<int>((bits >> 52) & 0x7ff);
+        auto mag = static_cast<std::int64_t>(bits & ((std::uint64_t{1} << 52) - 1));
+        e = -1074;
+        if (field != 0) {
+            mag |= std::int64_t{1} << 52;
+            e = field - 1075;
+        }
+        m = (bits >> 63) ? -mag : mag;
+    };
+    int low = 0;
+    bool any = false;
+    for (int k = 0; k < n; ++k) {
+        if (x[k] == 0) continue;
+        std::int64_t m;
+        int e;
+        decompose(x[k], m, e);
+        low = any ? std::min(low, e) : e;
+        any = true;
+    }
+    boost::multiprecision::cpp_int sum = 0;
+    for (int k = 0; k < n; ++k) {
+        if (x[k] == 0) continue;
+        std::int64_t m;
+        int e;
+        decompose(x[k], m, e);
+        sum += boost::multiprecision::cpp_int(m) << (e - low);
+    }
+    return sum > 0 ? Sign::positive : (sum < 0 ? Sign::negative : Sign::zero);
+}
+
+/// Sign of the exact sum of an expansion of length n (no zeros, increasing magnitude):
+/// its largest component once the structure is checked, the integer sum otherwise.
+inline Sign checked_sign(int n, const double* e) {
+    if (n == 0) return Sign::zero;
+    return nonoverlapping(n, e) ? sign_of(e[n - 1]) : exact_sign_of_sum(n, e);
+}
 
 /// A floating approximation of an expansion's value.
 inline double expansion_estimate(int n, const double* e) {
@@ -172,7 +273,8 @@ public:
         return e;
     }
 
-    Sign sign() const { return c_.empty() ? Sign::zero : sign_of(c_.back()); }
+    /// The sign of the exact value (checked_sign: the structure is not taken on trust).
+    Sign sign() const { return checked_sign(static_cast<int>(c_.size()), c_.data()); }
     /// A floating approximation of the value (the sum, smallest first).
     double estimate() const {
         double s = 0;

@@ -1,8 +1,11 @@
 # Lemma R2 (relative to the result): |fl(x) - x| <= eps |fl(x)| for 2^-1021 <= |x| <= 2^1023,
 # binary64, round to nearest even; proved one binade at a time (the hints split the range
-# at every power of two), for each sign. Its Coq certificate is 11 MB and takes coqc more
-# than five minutes, so ../coq_check.py skips this one script.
-# Read by ../derive_bounds.py as eps_result.
+# at every power of two), for each sign. Its `gappa -Bcoq` certificate is 11 MB and takes
+# coqc more than five minutes, so ../coq_check.py does not produce it: the lemma is
+# certified instead by the hand-written Coq proof ../coq/rounding_result.v (from Flocq's
+# relative_error_N_FLT_round, the same statement with the bound 2^-53), which
+# ../coq_check.py compiles. ../derive_bounds.py reads the result as eps_result and fails if
+# Gappa's bound is below the 2^-53 that the Coq file proves.
 @rnd = float<ieee_64, ne>;
 zp = rnd(xp);
 zn = rnd(xn);

@@ -24,8 +24,9 @@ inline constexpr double ccw_b = (2.0 + 12.0 * epsilon) * epsilon;
 inline constexpr double ccw_c = (9.0 + 64.0 * epsilon) * epsilon * epsilon;
 /// Stage C (orient2d and incircle): the error of stage B's estimate of its expansion,
 /// relative to the estimate. Shewchuk's (3 + 8 eps) eps is not covered by our proof for
-/// incircle, whose expansion is only strongly nonoverlapping: proofs/bounds.md#expansion-estimate
-/// proves (40/7) eps + O(eps^2) there (7/3 eps for orient2d), hence 6 eps.
+/// incircle, whose expansion is only in the class W (checked at run time, since Shewchuk's
+/// Theorem 13 is false): proofs/bounds.md#expansion-estimate proves (40/7) eps + O(eps^2)
+/// there (7/3 eps for orient2d), hence 6 eps.
 inline constexpr double result_err = 6.0 * epsilon;
 
 // ---- incircle ---------------------------------------------------------------------------
@@ -34,8 +35,8 @@ inline constexpr double result_err = 6.0 * epsilon;
 // the code uses 112: it costs nothing measurable and every constant here is one we prove.
 inline constexpr double icc_a = (10.0 + 112.0 * epsilon) * epsilon;
 /// Stage B. Shewchuk's (4 + 48 eps) eps is not covered by our proof: with the error of the
-/// estimate of a strongly nonoverlapping expansion, proofs/bounds.md#incircle-stages-b-and-c
-/// proves (4 + 60.86 eps + O(eps^2)) eps, hence 64.
+/// estimate of an expansion in class W (checked at run time), proofs/bounds.md#incircle-
+/// stages-b-and-c proves (4 + 60.86 eps + O(eps^2)) eps, hence 64.
 inline constexpr double icc_b = (4.0 + 64.0 * epsilon) * epsilon;
 inline constexpr double icc_c = (44.0 + 576.0 * epsilon) * epsilon * epsilon;
 
