@@ -320,6 +320,34 @@ TEST(DelaunayRealData, TimeZoneCitiesUnderEveryStrategy) {
     }
 }
 
+// ---- the default's shape rule ------------------------------------------------------------
+
+// Above automatic_strips_from points `automatic` runs strips, except on points along a
+// convex curve that the radial order follows (a parabola), where it keeps radial; not on
+// a circle (the radial order about its own centre is noise) nor on scattered points.
+TEST(DelaunayAutomatic, RadialOnAConvexCurveStripsElsewhere) {
+    const std::size_t n = automatic_strips_from + 7;
+    std::vector<Point2> parabola(n), circle(n), scattered(n);
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<double> uniform(-1, 1);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double x = static_cast<double>(i + 1);  // one branch, as in bench/
+        parabola[i] = {x, x * x};
+        const double t = 6.283185307179586 * static_cast<double>(i) / static_cast<double>(n);
+        circle[i] = {std::cos(t), std::sin(t)};
+        scattered[i] = {uniform(rng), uniform(rng)};
+    }
+    std::shuffle(parabola.begin(), parabola.end(), rng);
+    const std::pair<const std::vector<Point2>*, Strategy> cases[] = {
+        {&parabola, Strategy::radial}, {&circle, Strategy::strips}, {&scattered, Strategy::strips}};
+    for (const auto& [pts, expected] : cases) {
+        const Result r = triangulate(*pts, AdaptiveKernel{});
+        ASSERT_TRUE(r.ok()) << r.failure->message;
+        EXPECT_EQ(r.strategy, expected) << to_string(r.strategy);
+        EXPECT_TRUE(certify(*pts, r.triangulation).ok()) << to_string(r.strategy);
+    }
+}
+
 // ---- radial order ------------------------------------------------------------------------
 
 // A sampled convex curve: the paper's order is quadratic on the branch it inserts towards

@@ -24,7 +24,7 @@ enum class InCirclePolicy {
 /// How the triangulation is built. Every strategy gives a Delaunay triangulation with an
 /// exact kernel, and the same one whenever no four points are cocircular.
 enum class Strategy {
-    automatic,      ///< radial for small inputs, strips above (see choose_strategy)
+    automatic,      ///< radial for small inputs and convex curves, else strips (choose_strategy)
     lexicographic,  ///< the paper: one external incremental run in (x, y) order
     radial,         ///< one external incremental run, ascending distance from a centre
     strips,         ///< lexicographic strips, each radial, merged by the Guibas-Stolfi zipper
