@@ -3,11 +3,13 @@
 // in one process, on the same points.
 //
 // Names: tri/<input>/<n>/<implementation>[/real_time], n the nominal size (grids have
-// s^2 points, s = round(sqrt(n)); the counter `n` is the actual count). Implementations:
-//   adaptive-<strategy>-t<threads>  exidel::delaunay::triangulate with AdaptiveKernel and
-//                                   Options{.strategy, .threads}; strategies
-//                                   lexicographic (the paper), radial, strips (t1, t2),
-//                                   automatic (the default; t1, t2)
+// s^2 points, s = round(sqrt(n)); the counter `n` is the actual count). Implementations,
+// for every algorithm of the registry (delaunay/algorithms.hpp):
+//   adaptive-<strategy>-t<threads>  the external algorithm (exidel::delaunay::triangulate
+//                                   with AdaptiveKernel and Options{.strategy, .threads});
+//                                   strategies lexicographic (the paper), radial, strips
+//                                   (t1, t2), automatic (the default; t1, t2)
+//   adaptive-<algorithm>-t1         any other algorithm, by its registry name
 //   double-automatic-t1, exact-automatic-t1   the default strategy with DoubleKernel and
 //                                   GmpExactKernel (uniform only: the price of robustness)
 //   cgal-epick                      `CgalDelaunay dt; dt.insert(begin, end)` (spatial sort
@@ -85,6 +87,7 @@
 #include <utility>
 #include <vector>
 
+#include "exidel/delaunay/algorithms.hpp"
 #include "exidel/delaunay/triangulate.hpp"
 #include "generators.hpp"
 
@@ -311,25 +314,38 @@ benchmark::internal::Benchmark* reg(const std::string& name, std::size_t n,
     return b;
 }
 
+// The external algorithm is named by its order (adaptive-radial-t1, the names its
+// tables have always used); every other algorithm by its registry name.
 template <class K>
 void add_exidel(const std::string& prefix, const std::string& kernel, const std::string& in_name,
-                std::size_t n, Strategy strategy, unsigned threads) {
-    const std::string name = prefix + kernel + "-" + std::string(delaunay::to_string(strategy)) +
-                             "-t" + std::to_string(threads);
-    const delaunay::Options options{.strategy = strategy, .threads = threads};
+                std::size_t n, Strategy strategy, unsigned threads,
+                delaunay::Algorithm algorithm = delaunay::Algorithm::external) {
+    const std::string what = algorithm == delaunay::Algorithm::external
+                                 ? std::string(delaunay::to_string(strategy))
+                                 : std::string(delaunay::to_string(algorithm));
+    const std::string name = prefix + kernel + "-" + what + "-t" + std::to_string(threads);
+    const delaunay::Options options{
+        .strategy = strategy, .threads = threads, .algorithm = algorithm};
     reg(name, n, [=](benchmark::State& s) { exidel_bench<K>(s, name, in_name, n, options); });
 }
 
-// Every adaptive strategy and CGAL on one input; lexicographic and radial only when asked
-// (each is quadratic on some inputs).
+// Every algorithm of the registry with the adaptive kernel, and CGAL, on one input: an
+// algorithm that takes an order in each order (lexicographic and radial only when asked:
+// each is quadratic on some inputs), the others once.
 void add(const std::string& in_name, std::size_t n, bool lexicographic, bool radial) {
     const std::string prefix = "tri/" + in_name + "/" + std::to_string(n) + "/";
-    if (lexicographic) add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::lexicographic, 1);
-    if (radial) add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::radial, 1);
-    add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::strips, 1);
-    add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::strips, 2);
-    add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::automatic, 1);
-    add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::automatic, 2);
+    for (const delaunay::AlgorithmInfo& a : delaunay::algorithms()) {
+        if (!a.takes_order) {
+            add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::automatic, 1, a.id);
+            continue;
+        }
+        if (lexicographic) add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::lexicographic, 1, a.id);
+        if (radial) add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::radial, 1, a.id);
+        add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::strips, 1, a.id);
+        add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::strips, 2, a.id);
+        add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::automatic, 1, a.id);
+        add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::automatic, 2, a.id);
+    }
     reg(prefix + "cgal-epick", n, [=](benchmark::State& s) {
         cgal_bench(s, prefix + "cgal-epick", in_name, n);
     });

@@ -10,7 +10,7 @@
 #include <span>
 #include <string_view>
 
-#include "kernel_option.hpp"
+#include "exidel/predicates/registry.hpp"
 
 namespace exidel::cli {
 

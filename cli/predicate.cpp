@@ -15,7 +15,7 @@ namespace exidel::cli {
 
 namespace {
 
-constexpr std::string_view predicate_help =
+constexpr std::string_view predicate_help_head =
     R"(usage: exidel predicate [--kernel NAME] [-i FILE | FILE]
 
 Evaluates geometric predicates and prints one sign (-1, 0 or 1) per query, one per line,
@@ -47,19 +47,22 @@ on standard error and exit status 1. Output is streamed: the signs of the lines 
 line N have already been printed; nothing is printed for line N or after it.
 
 Options:
-  -k, --kernel NAME  double|long-double|adaptive|exact|exact-cpp|mpfr:<bits>
-                     (default: adaptive). adaptive, exact and exact-cpp are exact
-                     for every finite input; double, long-double and mpfr:<bits>
-                     evaluate the plain formulas in that arithmetic and can be
-                     wrong near degeneracy.
+  -k, --kernel NAME  one of the kernels below (default: adaptive). adaptive, exact
+                     and exact-cpp are exact for every finite input; the others
+                     evaluate the plain formulas in their arithmetic and can be
+                     wrong near degeneracy
   -i, --input FILE   read queries from FILE ('-' for standard input)
   -h, --help         show this help
 
 Exit status: 0 success, 1 bad input line or I/O error, 2 bad options.
+
+Kernels:
 )";
 
+std::string predicate_help() { return std::string(predicate_help_head) + kernel_help(); }
+
 int usage_error(const std::string& message) {
-    std::cerr << "exidel predicate: " << message << "\n\n" << predicate_help;
+    std::cerr << "exidel predicate: " << message << "\n\n" << predicate_help();
     return exit_usage;
 }
 
@@ -122,7 +125,7 @@ int predicate_command(std::span<const std::string_view> args) {
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string_view arg = args[i];
         if (arg == "-h" || arg == "--help") {
-            std::cout << predicate_help;
+            std::cout << predicate_help();
             return exit_ok;
         }
         std::string value;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "exidel/delaunay/algorithms.hpp"
 #include "exidel/io/number.hpp"
 #include "exidel/research/studies.hpp"
 
@@ -16,7 +17,7 @@ namespace exidel::cli {
 
 namespace {
 
-constexpr std::string_view study_help =
+constexpr std::string_view study_help_head =
     R"(usage: exidel study <study> [--out DIR] [--seed N] [--jobs N] [--quick] [options]
 
 Studies (each writes report.md, CSVs and pictures into DIR and prints its main table):
@@ -32,8 +33,9 @@ Studies (each writes report.md, CSVs and pictures into DIR and prints its main t
   all            the four above into DIR/<study>/ and DIR/report.md
   replay         classify one point file as the triangulation study would:
                  exidel study replay -i FILE --kernel K [--incircle determinant|cosine]
-                                     [--order lexicographic|radial|strips]
-                 (default order lexicographic, the paper's; strips use 64-point strips)
+                                     [--algorithm NAME] [--order lexicographic|radial|strips]
+                 (default: the external algorithm in the paper's lexicographic order;
+                 strips use 64-point strips)
 
 Common options:
   --out DIR       output folder (default: exidel-study/<study>, or exidel-study for all)
@@ -46,7 +48,7 @@ Common options:
 failure-map:
   --preset LIST   comma-separated preset names, or 'all' (default: all presets;
                   --quick: kettner1-3, incircle-s12, cosine-s12); --list-presets
-  --kernel LIST   comma-separated kernels: double|long-double|mpfr:<bits>|adaptive|exact
+  --kernel LIST   comma-separated kernel names (listed at the end)
                   (default: double,long-double,mpfr:106,adaptive,exact)
   --width W, --height H   window in cells (default 256 x 256)
   a custom configuration instead of presets:
@@ -72,6 +74,9 @@ triangulation:
                   lexicographic|radial|strips, or 'all' (default lexicographic, the
                   paper's algorithm; strips use 64-point strips so merges run). The
                   "Work per insertion order" table always compares all three
+  --algorithm LIST  algorithms (listed at the end), comma-separated, or 'all'
+                  (default external). Each runs in the orders above if it takes an
+                  order; with several, every table gets an "algorithm" column
 
 stages:
   --families LIST (default all)  --samples N queries per family and predicate
@@ -81,7 +86,13 @@ stages:
   --size N        points per triangulation (default 1000; quick 200)
 
 Exit status: 0 success, 1 a study failed (I/O), 2 bad options.
+
+Algorithms:
 )";
+
+std::string study_help() {
+    return std::string(study_help_head) + delaunay::algorithm_help() + "\nKernels:\n" + kernel_help();
+}
 
 int usage_error(const std::string& message) {
     std::cerr << "exidel study: " << message << "\n(see exidel study --help)\n";
@@ -144,7 +155,7 @@ struct Parsed {
     research::RunOptions run;
     bool out_given = false;
     std::optional<std::string> presets, kernels, predicate, points, move, order, families, bits,
-        sizes, input, incircle;
+        sizes, input, incircle, algorithms;
     std::optional<std::uint64_t> width, height, step, samples, seeds, size, shrink;
     bool centered = false, list_presets = false;
 };
@@ -171,6 +182,7 @@ Parsed parse(std::span<const std::string_view> args) {
         else if (a == "--points") p.points = value();
         else if (a == "--move") p.move = value();
         else if (a == "--order") p.order = value();
+        else if (a == "--algorithm" || a == "--algorithms" || a == "-a") p.algorithms = value();
         else if (a == "--families" || a == "--family") p.families = value();
         else if (a == "--bits") p.bits = value();
         else if (a == "--sizes") p.sizes = value();
@@ -230,7 +242,7 @@ void print_result(const research::StudyResult& r, const research::RunOptions& ru
 
 int study_command(std::span<const std::string_view> args) {
     if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
-        (args.empty() ? std::cerr : std::cout) << study_help;
+        (args.empty() ? std::cerr : std::cout) << study_help();
         return args.empty() ? exit_usage : exit_ok;
     }
     Parsed p;
@@ -276,6 +288,7 @@ int study_command(std::span<const std::string_view> args) {
             if (p.sizes) o.sizes = parse_list(*p.sizes, "--sizes", 100000);
             if (p.shrink) o.shrink_per_class = *p.shrink;
             if (p.order) o.orders = parse_orders(*p.order);
+            if (p.algorithms) o.algorithms = parse_algorithms(*p.algorithms);
             std::cout << "triangulation: seed " << p.run.seed << ", output " << p.run.out.string() << '\n';
             const TriangulationStudy r = run_triangulation_study(o, p.run);
             write_text_file(p.run.out / "report.md", r.report.render());
@@ -299,7 +312,9 @@ int study_command(std::span<const std::string_view> args) {
             const auto policy = parse_policy(p.incircle.value_or("determinant"));
             const std::vector<delaunay::Strategy> orders = parse_orders(p.order.value_or("lexicographic"));
             if (orders.size() != 1) return usage_error("replay runs one --order: lexicographic, radial or strips");
-            const Classification c = replay_fixture(*p.input, k, policy, orders.front());
+            const std::vector<delaunay::Algorithm> algorithms = parse_algorithms(p.algorithms.value_or("external"));
+            if (algorithms.size() != 1) return usage_error("replay runs one --algorithm");
+            const Classification c = replay_fixture(*p.input, k, policy, Method(algorithms.front(), orders.front()));
             std::cout << to_string(c.outcome) << (c.detail.empty() ? "" : " (" + c.detail + ")") << '\n';
         } else {
             return usage_error("unknown study '" + p.study + "'");

@@ -20,6 +20,7 @@
 #include <thread>
 
 #include "commands.hpp"
+#include "exidel/delaunay/algorithms.hpp"
 #include "exidel/delaunay/triangulate.hpp"
 #include "exidel/io/points.hpp"
 #include "exidel/io/triangulation.hpp"
@@ -28,16 +29,16 @@ namespace exidel::cli {
 
 namespace {
 
-constexpr std::string_view triangulate_help =
-    R"(usage: exidel triangulate [-i FILE] [-o FILE] [--kernel NAME]
+constexpr std::string_view triangulate_help_head =
+    R"(usage: exidel triangulate [-i FILE] [-o FILE] [--kernel NAME] [--algorithm NAME]
                           [--incircle determinant|cosine] [--format json|ele|off|svg]
                           [--input-format xy|json|node|f64] [--stats]
                           [--order auto|lexicographic|radial|strips] [--threads N]
                           [--strip-points N]
 
-Computes the Delaunay triangulation of a set of points with the external incremental
-algorithm (Cai 2025): each point is added outside the hull of the previous ones, so no
-point location is needed. The order of insertion (--order):
+Computes the Delaunay triangulation of a set of points, by default with the external
+incremental algorithm (Cai 2025): each point is added outside the hull of the previous
+ones, so no point location is needed. Its order of insertion (--order):
   lexicographic  the paper's: by x then y. The reference; quadratic on a sampled convex
                  curve inserted towards its vertex
   radial         by exact distance from a centre (ties by x then y)
@@ -75,10 +76,11 @@ Options:
   -o, --output FILE       write the triangulation to FILE ('-' for standard output);
                           written to a temporary file in the same directory and
                           renamed on success, so a failed run leaves no FILE
-  -k, --kernel NAME       double|long-double|adaptive|exact|exact-cpp|mpfr:<bits>
-                          (default: adaptive). adaptive, exact and exact-cpp give the
-                          Delaunay triangulation of every finite input; the others may
-                          give a wrong one or fail
+  -k, --kernel NAME       one of the kernels listed at the end (default: adaptive).
+                          adaptive, exact and exact-cpp give the Delaunay
+                          triangulation of every finite input; the others may give a
+                          wrong one or fail
+  -a, --algorithm NAME    one of the algorithms listed at the end (default: external)
       --incircle POLICY   determinant (default) or cosine (the paper's Section 5 test;
                           used by the insertions, the strips' merges always use the
                           determinant)
@@ -90,7 +92,8 @@ Options:
   -f, --format FORMAT     json|ele|off|svg
       --input-format FMT  xy|json|node|f64
       --stats             print one JSON object on standard error: sizes, kernel,
-                          "strategy" (the order that ran), "strips", "threads",
+                          "algorithm", "strategy" (the order that ran), "strips",
+                          "threads",
                           the algorithm's counters and "triangulate_ms" (the time of
                           the triangulation alone; reading and writing are in
                           "read_ms" and "write_ms"). Counters are collected only with
@@ -103,10 +106,17 @@ with "exidel: triangulation failed: <reason>" and exit status 1. No output is
 written in either case.
 
 Exit status: 0 success, 1 bad input, failed triangulation or I/O error, 2 bad options.
+
+Algorithms:
 )";
 
+std::string triangulate_help() {
+    return std::string(triangulate_help_head) + delaunay::algorithm_help() + "\nKernels:\n" +
+           kernel_help();
+}
+
 int usage_error(const std::string& message) {
-    std::cerr << "exidel triangulate: " << message << "\n\n" << triangulate_help;
+    std::cerr << "exidel triangulate: " << message << "\n\n" << triangulate_help();
     return exit_usage;
 }
 
@@ -115,6 +125,7 @@ struct Options {
     std::optional<std::string> output;
     std::string kernel = "adaptive";
     delaunay::InCirclePolicy incircle = delaunay::InCirclePolicy::determinant;
+    delaunay::Algorithm algorithm = delaunay::Algorithm::external;
     delaunay::Strategy strategy = delaunay::Strategy::automatic;
     unsigned threads = std::max(1u, std::thread::hardware_concurrency());
     std::size_t strip_points = 0;
@@ -168,7 +179,8 @@ void print_stats(std::ostream& err, std::size_t points, const delaunay::Result& 
       << ", \"duplicates\": " << t.duplicates.size() << ", \"triangles\": " << t.triangle_count()
       << ", \"hull_size\": " << t.hull.size()
       << ", \"collinear\": " << (t.collinear ? "true" : "false") << ", \"kernel\": \"" << kernel
-      << "\", \"incircle\": \"" << policy_name(o.incircle) << "\", \"strategy\": \""
+      << "\", \"incircle\": \"" << policy_name(o.incircle) << "\", \"algorithm\": \""
+      << delaunay::to_string(r.algorithm) << "\", \"strategy\": \""
       << delaunay::to_string(r.strategy) << "\", \"strips\": " << r.strips
       << ", \"threads\": " << o.threads
       << ", \"instrumentation\": \"counters\", \"counters\": {"
@@ -273,7 +285,8 @@ int run(const Options& o) {
 
     // Triangulate: the only timed step. Counters only when asked for, so a plain run is
     // the uninstrumented algorithm.
-    const delaunay::Options options{o.incircle, o.strategy, o.threads, o.strip_points};
+    delaunay::Options options{o.incircle, o.strategy, o.threads, o.strip_points};
+    options.algorithm = o.algorithm;
     delaunay::Result result;
     std::string kernel_name;
     double triangulate_ms = 0;
@@ -327,7 +340,7 @@ int triangulate_command(std::span<const std::string_view> args) {
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string_view arg = args[i];
         if (arg == "-h" || arg == "--help") {
-            std::cout << triangulate_help;
+            std::cout << triangulate_help();
             return exit_ok;
         }
         if (arg == "--stats") {
@@ -347,6 +360,13 @@ int triangulate_command(std::span<const std::string_view> args) {
             o.output = value;
         } else if (option("-k", "--kernel")) {
             o.kernel = value;
+        } else if (option("-a", "--algorithm")) {
+            if (const auto a = delaunay::algorithm_from_name(value)) {
+                o.algorithm = *a;
+            } else if (!missing) {
+                return usage_error("unknown algorithm '" + value + "' (expected " +
+                                   delaunay::algorithm_spellings() + ")");
+            }
         } else if (option("", "--incircle")) {
             if (value == "determinant") {
                 o.incircle = delaunay::InCirclePolicy::determinant;

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "exidel/predicates/exact.hpp"
-#include "kernel_option.hpp"
+#include "exidel/predicates/registry.hpp"
 
 namespace exidel::cli {
 namespace {

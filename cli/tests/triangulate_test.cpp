@@ -15,7 +15,9 @@
 #include <string>
 #include <vector>
 
+#include "exidel/delaunay/algorithms.hpp"
 #include "exidel/delaunay/certify.hpp"
+#include "exidel/predicates/registry.hpp"
 #include "exidel/io/points.hpp"
 #include "exidel/io/triangulation.hpp"
 #include "run_binary.hpp"
@@ -352,11 +354,12 @@ TEST(ExidelTriangulate, StatsIsOneJsonObjectWithEveryKey) {
           "counters.theorem1_checks", "counters.theorem1_violations",
           "counters.visible_search_orientations", "counters.merge_orientations",
           "counters.merge_incircle_tests", "counters.merge_deleted_edges",
-          "counters.merge_cross_edges", "counters.flips", "strategy", "strips", "threads",
-          "read_ms", "triangulate_ms", "write_ms"}) {
+          "counters.merge_cross_edges", "counters.flips", "algorithm", "strategy", "strips",
+          "threads", "read_ms", "triangulate_ms", "write_ms"}) {
         EXPECT_TRUE(v.count(key)) << key << " missing in " << r.err;
     }
-    EXPECT_EQ(v.size(), 29u) << r.err;
+    EXPECT_EQ(v.size(), 30u) << r.err;
+    EXPECT_EQ(v.at("algorithm"), "external");  // the default
     EXPECT_EQ(v.at("strategy"), "radial");  // auto, below 32768 points
     const auto tri = io::parse_triangulation_json(r.out);
     EXPECT_EQ(v.at("points"), "100");
@@ -375,6 +378,32 @@ TEST(ExidelTriangulate, StatsIsOneJsonObjectWithEveryKey) {
     EXPECT_GE(std::stod(v.at("triangulate_ms")), 0.0);
     // Without --stats nothing is printed on stderr.
     EXPECT_TRUE(run("-i " + in).err.empty());
+}
+
+// --algorithm takes every name of the registry, says in --stats which one ran, and
+// rejects anything else as a usage error (exit 2) that lists the known names. --help
+// lists the algorithms and the kernels from their registries.
+TEST(ExidelTriangulate, AlgorithmOptionTakesTheRegistryNames) {
+    const std::vector<Point2> pts = hundred_points();
+    const std::string in = points_file("algorithms.txt", pts, io::PointFormat::xy);
+    for (const exidel::delaunay::AlgorithmInfo& a : exidel::delaunay::algorithms()) {
+        const std::string name(a.name);
+        for (const std::string& flag : {"--algorithm " + name, "--algorithm=" + name, "-a " + name}) {
+            const RunResult r = run("-i " + in + " --stats " + flag);
+            ASSERT_EQ(r.status, 0) << flag << r.err;
+            EXPECT_EQ(FlatJson(r.err).values.at("algorithm"), name) << flag;
+            EXPECT_TRUE(certify_output(pts, r.out).ok()) << flag;
+        }
+    }
+    const RunResult bad = run("-i " + in + " --algorithm sideways");
+    EXPECT_EQ(bad.status, 2);
+    EXPECT_NE(bad.err.find("unknown algorithm 'sideways'"), std::string::npos) << bad.err;
+    EXPECT_NE(bad.err.find(exidel::delaunay::algorithm_spellings()), std::string::npos) << bad.err;
+    EXPECT_TRUE(bad.out.empty());
+    EXPECT_EQ(run("-i " + in + " --algorithm").status, 2);
+    const RunResult help = run("--help");
+    EXPECT_NE(help.out.find(exidel::delaunay::algorithm_help()), std::string::npos);
+    EXPECT_NE(help.out.find(exidel::kernel_help()), std::string::npos);
 }
 
 // Every order gives the same triangulation of points in general position, and says in

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <set>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -399,6 +400,45 @@ TEST(Triangulation, OrdersParseAndTheStudyRejectsAutomatic) {
     EXPECT_EQ(run_cli("study replay -i " + fixture + " --kernel double --order auto"), 2);
     EXPECT_EQ(run_cli("study triangulation --order sideways --out " +
                       work_dir("triangulation_bad_order").string()),
+              2);
+#endif
+}
+
+// The study runs the algorithms of the registry by name: "all" is every one, in registry
+// order; an algorithm with insertion orders runs once per order, any other once; every
+// run of the study names its algorithm.
+TEST(Triangulation, AlgorithmsComeFromTheRegistry) {
+    std::vector<delaunay::Algorithm> every;
+    for (const delaunay::AlgorithmInfo& a : delaunay::algorithms()) every.push_back(a.id);
+    EXPECT_EQ(parse_algorithms("all"), every);
+    EXPECT_EQ(parse_algorithms("external,external"), std::vector<delaunay::Algorithm>{delaunay::Algorithm::external});
+    EXPECT_THROW(parse_algorithms(""), std::invalid_argument);
+    EXPECT_THROW(parse_algorithms("sideways"), std::invalid_argument);
+    const std::vector<Method> methods = methods_of(every, all_orders);
+    std::size_t expected = 0;
+    for (const delaunay::AlgorithmInfo& a : delaunay::algorithms()) expected += a.takes_order ? all_orders.size() : 1;
+    EXPECT_EQ(methods.size(), expected);
+    for (const Method& m : methods) {
+        const delaunay::Options o = study_options(InCirclePolicy::determinant, m);
+        EXPECT_EQ(o.algorithm, m.algorithm);
+        EXPECT_EQ(o.strategy, m.order);
+    }
+    TriangulationOptions tr;
+    tr.kernels = {"adaptive"};
+    tr.families = {testing::Family::uniform};
+    tr.seeds = 1;
+    tr.sizes = {30};
+    tr.algorithms = every;
+    const TriangulationStudy s = run_triangulation_study(tr, quiet_run(work_dir("triangulation_algorithms")));
+    std::set<delaunay::Algorithm> seen;
+    for (const TriangulationRun& r : s.runs) {
+        seen.insert(r.algorithm);
+        EXPECT_EQ(r.result.outcome, Outcome::delaunay) << delaunay::to_string(r.algorithm);
+    }
+    EXPECT_EQ(seen.size(), every.size());
+#ifdef EXIDEL_CLI_PATH
+    EXPECT_EQ(run_cli("study triangulation --algorithm sideways --out " +
+                      work_dir("triangulation_bad_algorithm").string()),
               2);
 #endif
 }

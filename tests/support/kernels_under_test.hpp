@@ -4,6 +4,7 @@
 
 #include <array>
 #include <string>
+#include <type_traits>
 
 #include <gtest/gtest.h>
 
@@ -44,6 +45,18 @@ struct MpfrAtBound {
 static_assert(PredicateKernel<MpfrAtBound>);
 
 using ExactKernels = ::testing::Types<GmpExactKernel, CppIntExactKernel, MpfrAtBound, AdaptiveKernel>;
+
+/// Every kernel of the registry (exidel/predicates/registry.hpp) that claims exactness
+/// runs the exact-kernel tests: adding one there without adding it here fails to compile.
+template <class K, class... Ts>
+constexpr bool listed(::testing::Types<Ts...>*) {
+    return (std::is_same_v<K, Ts> || ...);
+}
+#define EXIDEL_EXACT_KERNEL_IS_TESTED_(K, spelling, summary)                        \
+    static_assert(!K::is_exact || listed<K>(static_cast<ExactKernels*>(nullptr)), \
+                  "add " #K " to ExactKernels: it claims exactness");
+EXIDEL_KERNELS(EXIDEL_EXACT_KERNEL_IS_TESTED_)
+#undef EXIDEL_EXACT_KERNEL_IS_TESTED_
 
 /// Names the typed-test instances after the kernel ("exact", "adaptive", ...).
 struct KernelName {

@@ -4,48 +4,19 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <charconv>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace exidel::research {
 
 Kernel parse_kernel(std::string_view name) {
-    if (name == "double") return DoubleKernel{};
-    if (name == "long-double") return LongDoubleKernel{};
-    if (name == "adaptive") return AdaptiveKernel{};
-    if (name == "exact") return GmpExactKernel{};
-    if (name.starts_with("mpfr:")) {
-        const std::string_view digits = name.substr(5);
-        unsigned bits = 0;
-        const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), bits);
-        if (ec == std::errc{} && end == digits.data() + digits.size() &&
-            bits >= MpfrKernel::min_bits && bits <= MpfrKernel::max_bits) {
-            return MpfrKernel(bits);
-        }
-        throw std::invalid_argument("bad MPFR precision in '" + std::string(name) +
-                                    "': expected mpfr:<bits> with bits in [" +
-                                    std::to_string(MpfrKernel::min_bits) + ", " +
-                                    std::to_string(MpfrKernel::max_bits) + "]");
-    }
-    throw std::invalid_argument("unknown kernel '" + std::string(name) + "' (expected " +
-                                std::string(kernel_spellings) + ")");
-}
-
-std::string kernel_name(const Kernel& k) {
-    return std::visit(
-        [](const auto& kernel) -> std::string {
-            using K = std::decay_t<decltype(kernel)>;
-            if constexpr (std::is_same_v<K, DoubleKernel>) return "double";
-            else if constexpr (std::is_same_v<K, LongDoubleKernel>) return "long-double";
-            else if constexpr (std::is_same_v<K, AdaptiveKernel>) return "adaptive";
-            else if constexpr (std::is_same_v<K, GmpExactKernel>) return "exact";
-            else return "mpfr:" + std::to_string(kernel.bits());
-        },
-        k);
+    std::string error;
+    if (auto k = exidel::parse_kernel(name, error)) return std::move(*k);
+    throw std::invalid_argument(error);
 }
 
 std::string kernel_file_name(const Kernel& k) {

@@ -66,17 +66,29 @@ constexpr delaunay::InCirclePolicy both_policies[] = {delaunay::InCirclePolicy::
 
 bool is_wrong(Outcome o) { return o != Outcome::delaunay; }
 
-bool is_paper_order(delaunay::Strategy order) { return order == delaunay::Strategy::lexicographic; }
+bool is_external(const Method& m) { return m.algorithm == delaunay::Algorithm::external; }
+bool is_paper_order(const Method& m) { return is_external(m) && m.order == delaunay::Strategy::lexicographic; }
 
-/// The flags that make `exidel study replay` and `exidel triangulate` run `order` as the
+/// What the "order" column shows: the insertion order of the external algorithm; other
+/// algorithms take none.
+std::string order_name(const Method& m) {
+    return is_external(m) ? std::string(delaunay::to_string(m.order)) : "-";
+}
+
+/// The flags that make `exidel study replay` and `exidel triangulate` run `method` as the
 /// study did. replay's default is the paper's order, triangulate's is auto, so only the
 /// triangulate line always names it.
-std::string replay_order_flags(delaunay::Strategy order) {
-    return is_paper_order(order) ? "" : " --order " + std::string(delaunay::to_string(order));
+std::string algorithm_flag(const Method& m) {
+    return is_external(m) ? "" : " --algorithm " + std::string(delaunay::to_string(m.algorithm));
 }
-std::string triangulate_order_flags(delaunay::Strategy order) {
-    std::string flags = " --order " + std::string(delaunay::to_string(order));
-    if (order == delaunay::Strategy::strips) flags += " --strip-points " + std::to_string(study_strip_points);
+std::string replay_order_flags(const Method& m) {
+    if (!is_external(m)) return algorithm_flag(m);
+    return is_paper_order(m) ? "" : " --order " + std::string(delaunay::to_string(m.order));
+}
+std::string triangulate_order_flags(const Method& m) {
+    if (!is_external(m)) return algorithm_flag(m);
+    std::string flags = " --order " + std::string(delaunay::to_string(m.order));
+    if (m.order == delaunay::Strategy::strips) flags += " --strip-points " + std::to_string(study_strip_points);
     return flags;
 }
 
@@ -105,10 +117,10 @@ struct WorkSample {
 /// Triangulates with the adaptive predicates, instrumented. StageCountingKernel is the
 /// adaptive kernel plus per-predicate call counts: the algorithm's Counters do not count
 /// the radial order's sort, the kernel does.
-WorkSample measure_work(std::span<const Point2> points, delaunay::Strategy order) {
+WorkSample measure_work(std::span<const Point2> points, const Method& method) {
     const StageCountingKernel kernel;
     const delaunay::Result r = delaunay::triangulate<delaunay::Instrumentation::counters>(
-        points, kernel, study_options(delaunay::InCirclePolicy::determinant, order));
+        points, kernel, study_options(delaunay::InCirclePolicy::determinant, method));
     WorkSample w;
     w.counters = r.counters;
     for (std::uint64_t v : kernel.counts[compare_distance_row]) w.distance_comparisons += v;
@@ -134,13 +146,50 @@ std::string_view to_string(Outcome o) noexcept {
     return "?";
 }
 
-delaunay::Options study_options(delaunay::InCirclePolicy policy, delaunay::Strategy order) {
+delaunay::Options study_options(delaunay::InCirclePolicy policy, Method method) {
     delaunay::Options options;
     options.incircle = policy;
-    options.strategy = order;
+    options.strategy = method.order;
     options.threads = 1;
     options.strip_points = study_strip_points;
+    options.algorithm = method.algorithm;
     return options;
+}
+
+std::vector<Method> methods_of(std::span<const delaunay::Algorithm> algorithms,
+                               std::span<const delaunay::Strategy> orders) {
+    std::vector<Method> out;
+    for (const delaunay::AlgorithmInfo& info : delaunay::algorithms()) {
+        if (std::find(algorithms.begin(), algorithms.end(), info.id) == algorithms.end()) continue;
+        if (!info.takes_order) {
+            out.emplace_back(info.id, delaunay::Strategy::automatic);
+            continue;
+        }
+        for (delaunay::Strategy o : orders) out.emplace_back(info.id, o);
+    }
+    return out;
+}
+
+std::vector<delaunay::Algorithm> parse_algorithms(std::string_view list) {
+    std::vector<delaunay::Algorithm> out;
+    const auto add = [&](delaunay::Algorithm a) {
+        if (std::find(out.begin(), out.end(), a) == out.end()) out.push_back(a);
+    };
+    while (!list.empty()) {
+        const std::size_t comma = list.find(',');
+        const std::string_view name = list.substr(0, comma);
+        if (name == "all") {
+            for (const delaunay::AlgorithmInfo& info : delaunay::algorithms()) add(info.id);
+        } else if (const auto a = delaunay::algorithm_from_name(name)) {
+            add(*a);
+        } else {
+            throw std::invalid_argument("unknown algorithm '" + std::string(name) + "' (expected " +
+                                        delaunay::algorithm_spellings() + " or all)");
+        }
+        list = comma == std::string_view::npos ? std::string_view{} : list.substr(comma + 1);
+    }
+    if (out.empty()) throw std::invalid_argument("empty algorithm list");
+    return out;
 }
 
 std::vector<delaunay::Strategy> parse_orders(std::string_view list) {
@@ -169,11 +218,11 @@ std::vector<delaunay::Strategy> parse_orders(std::string_view list) {
 }
 
 Classification classify_triangulation(std::span<const Point2> points, const Kernel& kernel,
-                                      delaunay::InCirclePolicy policy, delaunay::Strategy order,
+                                      delaunay::InCirclePolicy policy, Method method,
                                       std::uint64_t call_budget) {
     const std::uint64_t n = points.size();
     const std::uint64_t budget = call_budget ? call_budget : 64 * n * n + 1'000'000;
-    const delaunay::Options options = study_options(policy, order);
+    const delaunay::Options options = study_options(policy, method);
     std::optional<delaunay::Result> result;
     try {
         result = std::visit(
@@ -198,9 +247,9 @@ Classification classify_triangulation(std::span<const Point2> points, const Kern
 
 std::vector<Point2> shrink_failing_input(std::vector<Point2> points, const Kernel& kernel,
                                          delaunay::InCirclePolicy policy, const Classification& target,
-                                         delaunay::Strategy order) {
+                                         Method method) {
     const auto still_fails = [&](const std::vector<Point2>& candidate) {
-        const Classification c = classify_triangulation(candidate, kernel, policy, order);
+        const Classification c = classify_triangulation(candidate, kernel, policy, method);
         return c.outcome == target.outcome &&
                (target.outcome != Outcome::failure || c.detail == target.detail);
     };
@@ -248,11 +297,11 @@ std::string fixture_text(std::span<const Point2> points, std::span<const std::st
 }
 
 Classification replay_fixture(const std::filesystem::path& file, const Kernel& kernel,
-                              delaunay::InCirclePolicy policy, delaunay::Strategy order) {
+                              delaunay::InCirclePolicy policy, Method method) {
     std::ifstream in(file, std::ios::binary);
     if (!in) throw std::runtime_error("cannot open " + file.string());
     const std::vector<Point2> points = io::read_points(in, io::point_format_from_path(file.string()));
-    return classify_triangulation(points, kernel, policy, order);
+    return classify_triangulation(points, kernel, policy, method);
 }
 
 TriangulationStudy run_triangulation_study(const TriangulationOptions& options, const RunOptions& run) {
@@ -274,22 +323,30 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
                                         std::string(delaunay::to_string(o)));
         }
     }
+    const std::vector<delaunay::Algorithm> algorithms =
+        options.algorithms.empty() ? std::vector<delaunay::Algorithm>{delaunay::Algorithm::external}
+                                   : options.algorithms;
+    // What the outcome tables run, and what the work table runs (every order).
+    const std::vector<Method> methods = methods_of(algorithms, orders);
+    const std::vector<Method> work_methods = methods_of(algorithms, all_orders);
+    // One algorithm: the tables keep the columns they had before the registry.
+    const bool algorithm_column = algorithms.size() > 1;
     const std::size_t seeds = options.seeds ? options.seeds : (run.quick ? 4 : 16);
     const std::vector<std::size_t> sizes =
         options.sizes.empty() ? std::vector<std::size_t>{50, 100, 200, 500} : options.sizes;
     for (std::size_t n : sizes) {
         if (n < 1 || n > 100000) throw std::invalid_argument("triangulation sizes must be in [1, 100000]");
     }
-    const std::size_t per_order = kernels.size() * std::size(both_policies);
+    const std::size_t per_method = kernels.size() * std::size(both_policies);
 
-    // One chunk per (family, seed): one point set, every order, kernel and policy on it
-    // (runs in that nesting), and the work of every order with the adaptive kernel.
+    // One chunk per (family, seed): one point set, every method, kernel and policy on it
+    // (runs in that nesting), and the work of every work method with the adaptive kernel.
     struct Chunk {
         testing::Family family;
         std::size_t seed_index;
         std::vector<Point2> points;
         std::vector<TriangulationRun> runs;
-        std::array<WorkSample, all_orders.size()> work{};
+        std::vector<WorkSample> work;
     };
     std::vector<Chunk> chunks;
     for (testing::Family f : families) {
@@ -305,19 +362,19 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
                                                            c.seed_index}));
             c.points = testing::gen_points(c.family, n)(random).value();
         }
-        for (delaunay::Strategy order : orders) {
+        for (const Method& m : methods) {
             for (const Kernel& k : kernels) {
                 for (delaunay::InCirclePolicy p : both_policies) {
                     c.runs.push_back({c.family, c.seed_index, n, kernel_name(k), p,
-                                      classify_triangulation(c.points, k, p, order), order});
+                                      classify_triangulation(c.points, k, p, m), m.order, m.algorithm});
                 }
             }
         }
-        for (std::size_t o = 0; o < all_orders.size(); ++o) c.work[o] = measure_work(c.points, all_orders[o]);
+        for (const Method& m : work_methods) c.work.push_back(measure_work(c.points, m));
     });
 
     TriangulationStudy study;
-    // Counts per (family, order, kernel, policy) and per (order, kernel, policy), by positions.
+    // Counts per (family, method, kernel, policy) and per (method, kernel, policy), by positions.
     using Key = std::tuple<std::size_t, std::size_t, std::size_t, int>;
     using Cell = std::tuple<std::size_t, std::size_t, int>;
     std::map<Key, std::array<std::uint64_t, all_outcomes.size()>> counts;
@@ -335,8 +392,8 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
         const auto fpos = std::size_t(std::find(families.begin(), families.end(), c.family) - families.begin());
         for (std::size_t r = 0; r < c.runs.size(); ++r) {
             const TriangulationRun& tr = c.runs[r];
-            const std::size_t opos = r / per_order;
-            const std::size_t kpos = r % per_order / std::size(both_policies);
+            const std::size_t opos = r / per_method;
+            const std::size_t kpos = r % per_method / std::size(both_policies);
             const int pol = int(tr.policy);
             const auto o = std::size_t(tr.result.outcome);
             ++counts[{fpos, opos, kpos, pol}][o];
@@ -356,16 +413,33 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
         }
     }
 
-    study.table.header = {"family", "order", "kernel", "incircle"};
+    // The method's cells: "algorithm" (only when several run) and "order".
+    const auto method_cells = [&](const Method& m) {
+        std::vector<std::string> cells;
+        if (algorithm_column) cells.emplace_back(delaunay::to_string(m.algorithm));
+        cells.push_back(order_name(m));
+        return cells;
+    };
+    const auto method_header = [&](std::vector<std::string> before, std::vector<std::string> after) {
+        if (algorithm_column) before.emplace_back("algorithm");
+        before.emplace_back("order");
+        before.insert(before.end(), after.begin(), after.end());
+        return before;
+    };
+    const auto join = [](std::vector<std::string> a, const std::vector<std::string>& b) {
+        a.insert(a.end(), b.begin(), b.end());
+        return a;
+    };
+    study.table.header = method_header({"family"}, {"kernel", "incircle"});
     for (Outcome o : all_outcomes) study.table.header.emplace_back(to_string(o));
     for (std::size_t f = 0; f < families.size(); ++f) {
-        for (std::size_t op = 0; op < orders.size(); ++op) {
+        for (std::size_t op = 0; op < methods.size(); ++op) {
             for (std::size_t k = 0; k < kernels.size(); ++k) {
                 for (delaunay::InCirclePolicy p : both_policies) {
                     const auto& row_counts = counts[{f, op, k, int(p)}];
-                    std::vector<std::string> row{std::string(testing::family_name(families[f])),
-                                                 std::string(delaunay::to_string(orders[op])),
-                                                 kernel_name(kernels[k]), std::string(policy_name(p))};
+                    std::vector<std::string> row =
+                        join(join({std::string(testing::family_name(families[f]))}, method_cells(methods[op])),
+                             {kernel_name(kernels[k]), std::string(policy_name(p))});
                     for (std::uint64_t v : row_counts) row.push_back(std::to_string(v));
                     study.table.rows.push_back(std::move(row));
                 }
@@ -373,17 +447,17 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
         }
     }
     Table summary;
-    summary.header = {"order", "kernel", "incircle", "runs"};
+    summary.header = method_header({}, {"kernel", "incircle", "runs"});
     for (Outcome o : all_outcomes) summary.header.emplace_back(to_string(o));
     summary.header.emplace_back("wrong outcomes by kind");
-    for (std::size_t op = 0; op < orders.size(); ++op) {
+    for (std::size_t op = 0; op < methods.size(); ++op) {
         for (std::size_t k = 0; k < kernels.size(); ++k) {
             for (delaunay::InCirclePolicy p : both_policies) {
                 const auto& t = totals[{op, k, int(p)}];
                 std::uint64_t runs = 0;
                 for (std::uint64_t v : t) runs += v;
-                std::vector<std::string> row{std::string(delaunay::to_string(orders[op])), kernel_name(kernels[k]),
-                                             std::string(policy_name(p)), std::to_string(runs)};
+                std::vector<std::string> row = join(
+                    method_cells(methods[op]), {kernel_name(kernels[k]), std::string(policy_name(p)), std::to_string(runs)});
                 for (std::uint64_t v : t) row.push_back(std::to_string(v));
                 std::string kinds;
                 for (const auto& [what, n] : details[{op, k, int(p)}]) {
@@ -395,13 +469,15 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
         }
     }
 
-    // The work of each order, per family and over all families (chunk order: the sums
+    // The work of each method, per family and over all families (chunk order: the sums
     // do not depend on which thread measured what).
     std::vector<OrderWork> overall;
-    for (delaunay::Strategy order : all_orders) overall.push_back({families.front(), order, 0, 0, {}, 0, 0, 0});
+    for (const Method& m : work_methods) {
+        overall.push_back({families.front(), m.order, m.algorithm, 0, 0, {}, 0, 0, 0});
+    }
     for (testing::Family f : families) {
-        for (std::size_t o = 0; o < all_orders.size(); ++o) {
-            OrderWork w{f, all_orders[o], 0, 0, {}, 0, 0, 0};
+        for (std::size_t o = 0; o < work_methods.size(); ++o) {
+            OrderWork w{f, work_methods[o].order, work_methods[o].algorithm, 0, 0, {}, 0, 0, 0};
             for (const Chunk& c : chunks) {
                 if (c.family != f) continue;
                 const WorkSample& s = c.work[o];
@@ -423,16 +499,17 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
         }
     }
     Table work_table;
-    work_table.header = {"family", "order", "point sets", "points", "flips/point", "in-circle tests/point",
-                         "orientations/point", "distance comparisons/point", "merges", "certified"};
+    work_table.header = method_header({"family"}, {"point sets", "points", "flips/point", "in-circle tests/point",
+                                                   "orientations/point", "distance comparisons/point", "merges",
+                                                   "certified"});
     const auto work_row = [&](std::string family, const OrderWork& w) {
-        work_table.rows.push_back({std::move(family), std::string(delaunay::to_string(w.order)),
+        work_table.rows.push_back(join(join({std::move(family)}, method_cells(Method(w.algorithm, w.order))), {
                                    std::to_string(w.sets), std::to_string(w.points),
                                    per_point(w.counters.flips(), w.points),
                                    per_point(incircle_tests(w.counters), w.points),
                                    per_point(orientations(w.counters), w.points),
                                    per_point(w.distance_comparisons, w.points), std::to_string(w.merges),
-                                   std::to_string(w.certified) + "/" + std::to_string(w.sets)});
+                                   std::to_string(w.certified) + "/" + std::to_string(w.sets)}));
     };
     for (const OrderWork& w : study.work) work_row(std::string(testing::family_name(w.family)), w);
     for (const OrderWork& w : overall) work_row("all families", w);
@@ -444,45 +521,49 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
         for_each_chunk(to_shrink.size(), run.jobs, &shrink_progress, [&](std::size_t i) {
             const Candidate& c = to_shrink[i];
             shrunk[i] = shrink_failing_input(c.chunk->points, kernels[c.kernel], c.run.policy, c.run.result,
-                                             c.run.order);
+                                             Method(c.run.algorithm, c.run.order));
         });
     }
     Table fixtures_table;
-    fixtures_table.header = {"fixture", "order", "kernel", "incircle", "outcome", "points (original)", "replays"};
+    fixtures_table.header = method_header({"fixture"}, {"kernel", "incircle", "outcome", "points (original)", "replays"});
     for (std::size_t i = 0; i < to_shrink.size(); ++i) {
         const Candidate& c = to_shrink[i];
         const Kernel& k = kernels[c.kernel];
         const std::string kname = kernel_name(k);
-        const std::string oname(delaunay::to_string(c.run.order));
-        // The paper's order keeps the names fixtures had before orders existed.
+        const Method method(c.run.algorithm, c.run.order);
+        const std::string oname = is_external(method) ? order_name(method)
+                                                      : std::string(delaunay::to_string(method.algorithm));
+        // The paper's order keeps the names fixtures had before orders existed; another
+        // algorithm's fixtures carry its name instead of an order.
         const std::string file = "fixtures/" + std::string(to_string(c.run.result.outcome)) + "-" +
                                  kernel_file_name(k) + "-" + std::string(policy_name(c.run.policy)) +
-                                 (is_paper_order(c.run.order) ? "" : "-" + oname) + "-" +
+                                 (is_paper_order(method) ? "" : "-" + oname) + "-" +
                                  std::string(testing::family_name(c.run.family)) + "-s" +
                                  std::to_string(c.run.seed_index) + ".xy";
         // The shrunk set's own classification (its detail may differ from the original's
         // for invalid and not_delaunay outcomes, which shrink by outcome only).
-        const Classification now = classify_triangulation(shrunk[i], k, c.run.policy, c.run.order);
+        const Classification now = classify_triangulation(shrunk[i], k, c.run.policy, method);
         const std::string cmd_flags = "--kernel " + kname + " --incircle " + std::string(policy_name(c.run.policy));
         const std::vector<std::string> header{
             "exidel study triangulation fixture: " + describe(now),
-            "kernel " + kname + ", incircle policy " + std::string(policy_name(c.run.policy)) + ", order " + oname,
+            "kernel " + kname + ", incircle policy " + std::string(policy_name(c.run.policy)) +
+                (is_external(method) ? ", order " : ", algorithm ") + oname,
             "family " + std::string(testing::family_name(c.run.family)) + ", seed index " +
                 std::to_string(c.run.seed_index) + " of study seed " + std::to_string(run.seed) + ", " +
                 std::to_string(c.chunk->points.size()) + " points shrunk to " + std::to_string(shrunk[i].size()),
-            "reproduce: exidel study replay -i FILE " + cmd_flags + replay_order_flags(c.run.order),
-            "      and: exidel triangulate -i FILE " + cmd_flags + triangulate_order_flags(c.run.order) +
+            "reproduce: exidel study replay -i FILE " + cmd_flags + replay_order_flags(method),
+            "      and: exidel triangulate -i FILE " + cmd_flags + triangulate_order_flags(method) +
                 (now.outcome == Outcome::failure ? "   (exit status 1: triangulation failed)"
                                                  : "   (output differs from --kernel exact)"),
         };
         write_text_file(run.out / file, fixture_text(shrunk[i], header));
         study.fixtures.push_back({file, kname, c.run.policy, now, c.chunk->points.size(), shrunk[i].size(),
-                                  c.run.order});
-        fixtures_table.rows.push_back({"`" + file + "`", oname, kname, std::string(policy_name(c.run.policy)),
-                                       describe(now),
-                                       std::to_string(shrunk[i].size()) + " (" +
-                                           std::to_string(c.chunk->points.size()) + ")",
-                                       now.outcome == c.run.result.outcome ? "yes" : "NO"});
+                                  c.run.order, c.run.algorithm});
+        fixtures_table.rows.push_back(join(join({"`" + file + "`"}, method_cells(method)),
+                                           {kname, std::string(policy_name(c.run.policy)), describe(now),
+                                            std::to_string(shrunk[i].size()) + " (" +
+                                                std::to_string(c.chunk->points.size()) + ")",
+                                            now.outcome == c.run.result.outcome ? "yes" : "NO"}));
     }
 
     write_text_file(run.out / "triangulation.csv", study.table.csv());
@@ -493,12 +574,17 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
     for (std::size_t n : sizes) sizes_text += (sizes_text.empty() ? "" : ", ") + std::to_string(n);
     std::string orders_text;
     for (delaunay::Strategy o : orders) orders_text += (orders_text.empty() ? "" : ", ") + std::string(delaunay::to_string(o));
+    std::string others_text;
+    for (const Method& m : methods) {
+        if (!is_external(m)) others_text += ", and by the " + std::string(delaunay::to_string(m.algorithm)) + " algorithm";
+    }
     study.report = Report("Triangulation outcomes per kernel and in-circle policy");
     study.report.paragraph(
         "Every family of lib/testing, " + std::to_string(seeds) + " point sets each (sizes " + sizes_text +
         ", cycled; seed " + std::to_string(run.seed) + "); every kernel and both in-circle "
         "policies triangulate the same point sets, in insertion order " + orders_text +
-        (orders.size() == 1 && is_paper_order(orders.front()) ? " (the paper's algorithm)" : "") +
+        (orders.size() == 1 && orders.front() == delaunay::Strategy::lexicographic ? " (the paper's algorithm)" : "") +
+        others_text +
         ". Outcomes, decided by the exact certifier: "
         "**delaunay** (certified), **not_delaunay** (a valid triangulation with some edge not "
         "locally Delaunay), **invalid** (not a triangulation of the points; the certifier's first "

@@ -15,10 +15,8 @@
 #include <vector>
 
 #include "exidel/delaunay/result.hpp"
-#include "exidel/predicates/adaptive.hpp"
-#include "exidel/predicates/exact.hpp"
-#include "exidel/predicates/floating.hpp"
 #include "exidel/predicates/kernel.hpp"
+#include "exidel/predicates/registry.hpp"
 
 namespace exidel::delaunay {
 
@@ -130,11 +128,9 @@ inline std::int64_t theorem6_corrected(const SortedHull& r) {
     return theorem6_paper(r) + static_cast<std::int64_t>(r.h);
 }
 
-extern template SortedHull sorted_convex_hull<AdaptiveKernel>(std::span<const Point2>,
-                                                              const AdaptiveKernel&);
-extern template SortedHull sorted_convex_hull<GmpExactKernel>(std::span<const Point2>,
-                                                              const GmpExactKernel&);
-extern template SortedHull sorted_convex_hull<DoubleKernel>(std::span<const Point2>,
-                                                            const DoubleKernel&);
+#define EXIDEL_HULL_EXTERN(K, spelling, summary) \
+    extern template SortedHull sorted_convex_hull<K>(std::span<const Point2>, const K&);
+EXIDEL_KERNELS(EXIDEL_HULL_EXTERN)
+#undef EXIDEL_HULL_EXTERN
 
 }  // namespace exidel::delaunay

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "exidel/delaunay/algorithms.hpp"
 #include "exidel/predicates/types.hpp"
 
 namespace exidel::delaunay {
@@ -21,8 +22,9 @@ enum class InCirclePolicy {
     cosine,       ///< the paper's Section 5 test, k.incircle_cosine(a, b, c, p).
 };
 
-/// How the triangulation is built. Every strategy gives a Delaunay triangulation with an
-/// exact kernel, and the same one whenever no four points are cocircular.
+/// The external algorithm's insertion order (Options::strategy; other algorithms ignore
+/// it). Every strategy gives a Delaunay triangulation with an exact kernel, and the same
+/// one whenever no four points are cocircular.
 enum class Strategy {
     automatic,      ///< radial for small inputs and convex curves, else strips (choose_strategy)
     lexicographic,  ///< the paper: one external incremental run in (x, y) order
@@ -42,6 +44,10 @@ struct Options {
     /// extended until its points are not all collinear (the merge needs triangles on both
     /// sides), so 1 or 2 mean "the smallest non-collinear strips": pure divide and conquer.
     std::size_t strip_points = 0;
+    /// Which algorithm runs (algorithms.hpp lists them). Every algorithm gives a Delaunay
+    /// triangulation with an exact kernel, and the same one whenever no four points are
+    /// cocircular.
+    Algorithm algorithm = Algorithm::external;
 };
 
 /// What a run records. `off` compiles every counter away.
@@ -76,7 +82,8 @@ struct Counters {
     Counters& operator+=(const Counters& o) noexcept;
 };
 
-/// Why a run stopped. Everything but non_finite_input and too_many_points means the
+/// Why a run stopped. Everything but non_finite_input, too_many_points and
+/// unknown_algorithm means the
 /// kernel's answers were geometrically inconsistent (only possible with an inexact
 /// kernel); the structure is then abandoned instead of being walked further.
 enum class FailureKind {
@@ -89,6 +96,7 @@ enum class FailureKind {
     point_inside_hull,     ///< radial order: the new point saw no edge of the current hull
     merge_inconsistent,    ///< strips: the zipper's answers do not describe a merge
     result_inconsistent,   ///< the finished structure does not close (hull or neighbours)
+    unknown_algorithm,     ///< Options::algorithm holds no Algorithm enumerator
 };
 
 std::string_view to_string(FailureKind kind) noexcept;
@@ -142,7 +150,8 @@ struct Result {
     Triangulation triangulation;  ///< meaningful only when ok()
     Counters counters;            ///< zero unless instrumented
     std::optional<Failure> failure;
-    Strategy strategy = Strategy::lexicographic;  ///< the strategy that ran (never automatic)
+    Algorithm algorithm = Algorithm::external;    ///< the algorithm that ran
+    Strategy strategy = Strategy::lexicographic;  ///< external: the strategy that ran (never automatic)
     std::size_t strips = 1;                       ///< pieces merged (1 unless strips ran)
     bool ok() const noexcept { return !failure.has_value(); }
 };

@@ -31,17 +31,13 @@ namespace exidel::research {
 // ---------------------------------------------------------------------------------
 // Kernels and formulations.
 
-/// The kernels a study can evaluate. GmpExactKernel is the reference of every study.
-using Kernel = std::variant<DoubleKernel, LongDoubleKernel, MpfrKernel, AdaptiveKernel,
-                            GmpExactKernel>;
+/// The kernels a study can evaluate: every kernel of the registry
+/// (exidel/predicates/registry.hpp). GmpExactKernel is the reference of every study.
+using Kernel = AnyKernel;
+using exidel::kernel_name;
 
-inline constexpr std::string_view kernel_spellings = "double|long-double|mpfr:<bits>|adaptive|exact";
-
-/// "double", "long-double", "mpfr:<bits>", "adaptive", "exact". Throws
-/// std::invalid_argument with a readable message for anything else.
+/// parse_kernel of the registry, throwing std::invalid_argument with its message.
 Kernel parse_kernel(std::string_view name);
-/// The spelling parse_kernel accepts for `k` (so names round-trip on the command line).
-std::string kernel_name(const Kernel& k);
 /// kernel_name with characters unsafe in file names replaced ("mpfr:64" -> "mpfr64").
 std::string kernel_file_name(const Kernel& k);
 

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "exidel/delaunay/algorithms.hpp"
 #include "exidel/delaunay/result.hpp"
 #include "exidel/research/common.hpp"
 #include "exidel/research/graphics.hpp"
@@ -154,30 +155,48 @@ inline constexpr std::array all_orders{delaunay::Strategy::lexicographic, delaun
 /// the part of strips that the other orders lack, actually run.
 inline constexpr std::size_t study_strip_points = 64;
 
-/// The delaunay::Options every study uses for `policy` and `order`: one thread (the
+/// How a study triangulates: an algorithm of the registry (delaunay/algorithms.hpp) and,
+/// for the external algorithm, its insertion order (ignored by the others). Converts from
+/// an order alone: the external algorithm in that order, the subject of every study.
+struct Method {
+    Method(delaunay::Strategy order = delaunay::Strategy::lexicographic) : order(order) {}  // NOLINT
+    Method(delaunay::Algorithm algorithm, delaunay::Strategy order) : algorithm(algorithm), order(order) {}
+    delaunay::Algorithm algorithm = delaunay::Algorithm::external;
+    delaunay::Strategy order = delaunay::Strategy::lexicographic;
+    bool operator==(const Method&) const = default;
+};
+
+/// The methods of `algorithms`, in registry order: for an algorithm with insertion
+/// orders (the external one) one method per order of `orders`, for any other one.
+std::vector<Method> methods_of(std::span<const delaunay::Algorithm> algorithms,
+                               std::span<const delaunay::Strategy> orders);
+
+/// The delaunay::Options every study uses for `policy` and `method`: one thread (the
 /// output does not depend on it, and the studies parallelise over inputs) and strips of
 /// study_strip_points points.
-delaunay::Options study_options(delaunay::InCirclePolicy policy, delaunay::Strategy order);
+delaunay::Options study_options(delaunay::InCirclePolicy policy, Method method);
+
+/// Algorithms from a comma-separated list of registry names and "all", in the order
+/// given, repeats dropped. Throws std::invalid_argument naming the spellings.
+std::vector<delaunay::Algorithm> parse_algorithms(std::string_view list);
 
 /// Orders from a comma-separated list of lexicographic, radial, strips and "all", in the
 /// order given, repeats dropped. Throws std::invalid_argument naming the spellings.
 std::vector<delaunay::Strategy> parse_orders(std::string_view list);
 
-/// Triangulates `points` with `kernel`, `policy` and insertion `order` (study_options;
-/// at most call_budget predicate calls, 0 meaning 64 n^2 + 10^6) and certifies the
-/// result exactly.
+/// Triangulates `points` with `kernel`, `policy` and `method` (study_options; at most
+/// call_budget predicate calls, 0 meaning 64 n^2 + 10^6) and certifies the result
+/// exactly.
 Classification classify_triangulation(std::span<const Point2> points, const Kernel& kernel,
-                                      delaunay::InCirclePolicy policy,
-                                      delaunay::Strategy order = delaunay::Strategy::lexicographic,
+                                      delaunay::InCirclePolicy policy, Method method = {},
                                       std::uint64_t call_budget = 0);
 
 /// Delta debugging: a smallest subset of `points` (no single point removable) whose
-/// outcome under `order` is still `target`.outcome (and, for failures, the same
+/// outcome under `method` is still `target`.outcome (and, for failures, the same
 /// FailureKind).
 std::vector<Point2> shrink_failing_input(std::vector<Point2> points, const Kernel& kernel,
                                          delaunay::InCirclePolicy policy,
-                                         const Classification& target,
-                                         delaunay::Strategy order = delaunay::Strategy::lexicographic);
+                                         const Classification& target, Method method = {});
 
 /// Fixture text: '#' comment lines (header), then "x y" with C99 hex floats, which
 /// `exidel triangulate -i FILE` reads back exactly.
@@ -192,6 +211,10 @@ struct TriangulationOptions {
     /// Insertion orders for the outcome tables and fixtures; empty: lexicographic only
     /// (the paper's algorithm). The work table always runs all_orders.
     std::vector<delaunay::Strategy> orders;
+    /// Algorithms of the registry; empty: the external one only. Each runs in the orders
+    /// above if it takes an order (methods_of), and in the work table. With more than one,
+    /// every table gets an "algorithm" column.
+    std::vector<delaunay::Algorithm> algorithms;
 };
 
 struct TriangulationRun {
@@ -201,6 +224,7 @@ struct TriangulationRun {
     delaunay::InCirclePolicy policy;
     Classification result;
     delaunay::Strategy order = delaunay::Strategy::lexicographic;
+    delaunay::Algorithm algorithm = delaunay::Algorithm::external;
 };
 
 struct Fixture {
@@ -210,6 +234,7 @@ struct Fixture {
     Classification result;
     std::size_t original_size = 0, size = 0;
     delaunay::Strategy order = delaunay::Strategy::lexicographic;
+    delaunay::Algorithm algorithm = delaunay::Algorithm::external;
 };
 
 /// The work of one insertion order on one family's point sets (every seed of the study),
@@ -218,6 +243,7 @@ struct Fixture {
 struct OrderWork {
     testing::Family family;
     delaunay::Strategy order;
+    delaunay::Algorithm algorithm = delaunay::Algorithm::external;
     std::size_t sets = 0, points = 0;  ///< points: input points, duplicates included
     delaunay::Counters counters;
     std::uint64_t distance_comparisons = 0;  ///< compare_distance calls (the radial sort)
@@ -228,7 +254,8 @@ struct OrderWork {
 struct TriangulationStudy : StudyResult {
     std::vector<TriangulationRun> runs;
     std::vector<Fixture> fixtures;
-    std::vector<OrderWork> work;  ///< per family (study order), then per all_orders
+    std::vector<OrderWork> work;  ///< per family (study order), then per work method (all_orders
+                                  ///< for the external algorithm)
 };
 
 TriangulationStudy run_triangulation_study(const TriangulationOptions& options,
@@ -237,8 +264,7 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options,
 /// Reads a fixture (or any xy point file), classifies it as the study would, and says
 /// so: the `exidel study replay` command.
 Classification replay_fixture(const std::filesystem::path& file, const Kernel& kernel,
-                              delaunay::InCirclePolicy policy,
-                              delaunay::Strategy order = delaunay::Strategy::lexicographic);
+                              delaunay::InCirclePolicy policy, Method method = {});
 
 // =================================================================================
 // stages

@@ -14,10 +14,10 @@
 //                (Alg. 3). Points on the circle keep their edge;
 //   4. connect   fan p to the surviving border.
 //
-// Two external orders (Order):
+// Two external orders, each a Starts type (hull_start.hpp) that says where the walks start:
 //   lexicographic  the paper's (x, y) order. The last inserted point is the largest so
 //                  far, hence a hull vertex, and p, larger still, sees one of its two hull
-//                  edges: the walks start there.
+//                  edges: the walks start there (LastPointStart).
 //   radial         ascending distance from a centre c, ties lexicographic. The earlier
 //                  points lie in the closed disc of radius |p - c| around c, and p is on
 //                  its boundary circle; a strictly convex disc has no boundary point in the
@@ -25,7 +25,7 @@
 //                  strictly outside their hull and sees at least one hull edge. Which one
 //                  is not known in advance: an angular hash of hull vertices around c (as
 //                  in delaunator) proposes a start, and a bounded walk along the hull tests
-//                  edges with orient2d until one is strictly visible (see visible_edge).
+//                  edges with orient2d until one is strictly visible (RadialHullHash).
 //                  The first points may be collinear; the caller sorts that collinear
 //                  prefix lexicographically, which keeps the order external (they are the
 //                  nearest points) and lets the seed fan them in order along their line.
@@ -41,48 +41,27 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "exidel/delaunay/detail/counting.hpp"
+#include "exidel/delaunay/detail/hull_start.hpp"
+#include "exidel/delaunay/detail/mesh.hpp"
 #include "exidel/delaunay/detail/radial.hpp"
 #include "exidel/delaunay/result.hpp"
-#include "exidel/predicates/adaptive.hpp"
 #include "exidel/predicates/kernel.hpp"
 
 namespace exidel::delaunay::detail {
 
-/// A triangulation in the layout of Triangulation, over vertex ids that are positions in
-/// the point sequence it was built from (or, after a merge, sorted positions).
-struct Mesh {
-    std::vector<std::uint32_t> triangles;
-    std::vector<std::int32_t> halfedges;
-    std::vector<std::uint32_t> hull_next, hull_prev;  // the hull as a linked cycle
-    std::vector<std::int32_t> hull_edge;  // v -> the half-edge v -> hull_next[v]
-    std::size_t hull_size = 0;
-    bool collinear = false;  // no triangle: every point on one line
-};
-
-/// Vertex slot of a deleted triangle, and hull_next of a vertex no longer on the hull.
-inline constexpr std::uint32_t dead = 0xffffffffu;
-
-enum class Order { lexicographic, radial };
-
-/// The counters of one builder or merge; `off` compiles every increment away.
-template <Instrumentation I>
-struct Counting {
-    Counters counters_{};
-    void count(std::uint64_t Counters::*field) {
-        if constexpr (I != Instrumentation::off) ++(counters_.*field);
-    }
-};
-
-template <PredicateKernel K, Instrumentation I, InCirclePolicy P, Order O>
+template <PredicateKernel K, Instrumentation I, InCirclePolicy P, class Starts>
 class Builder : Counting<I> {
 public:
     /// `points` in an external order (see above); `input_of` maps a position to the input
-    /// index named in failure messages; `centre` is the radial order's centre.
+    /// index named in failure messages; `starts` finds where the tangent walks start in
+    /// that order (hull_start.hpp).
     Builder(const K& kernel, std::span<const Point2> points,
-            std::span<const std::uint32_t> input_of, Point2 centre = {})
-        : k_(kernel), pts_(points), input_of_(input_of), centre_(centre) {}
+            std::span<const std::uint32_t> input_of, Starts starts = {})
+        : k_(kernel), pts_(points), input_of_(input_of), starts_(std::move(starts)) {}
 
     /// Builds into `mesh` (its vectors are replaced). On failure the mesh is meaningless.
     std::optional<Failure> run(Mesh& mesh) {
@@ -102,12 +81,8 @@ public:
             return std::nullopt;
         }
         m_ = &mesh;
-        mesh.hull_next.assign(n, 0);
-        mesh.hull_prev.assign(n, 0);
-        mesh.hull_edge.assign(n, -1);
-        mesh.triangles.reserve(6 * n);
-        mesh.halfedges.reserve(6 * n);
-        if constexpr (O == Order::radial) prepare_hash();
+        mesh.reset(n);
+        starts_.prepare(pts_);
         seed(first_off);
         for (std::size_t i = first_off + 1; i < n; ++i) {
             if (auto failure = insert(static_cast<std::uint32_t>(i))) return failure;
@@ -131,14 +106,7 @@ private:
     /// the right. True: p strictly inside the circle through a, b, c.
     bool in_circle(Point2 a, Point2 b, Point2 c, Point2 p) {
         this->count(&Counters::incircle_tests);
-        if constexpr (I == Instrumentation::theorem1) {
-            // Theorem 1, decided exactly whatever kernel runs the algorithm.
-            ++this->counters_.theorem1_checks;
-            if (!(AdaptiveKernel::orient2d(a, b, c) == Sign::positive &&
-                  AdaptiveKernel::orient2d(a, b, p) == Sign::negative)) {
-                ++this->counters_.theorem1_violations;
-            }
-        }
+        this->check_theorem1(a, b, c, p);
         if constexpr (P == InCirclePolicy::determinant) {
             return k_.incircle(a, b, c, p) == Sign::positive;
         } else {
@@ -149,31 +117,10 @@ private:
 
     std::uint32_t new_triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
         this->count(&Counters::triangles_created);
-        auto& tris = m_->triangles;
-        std::uint32_t t;
-        if (!free_.empty()) {
-            t = free_.back();
-            free_.pop_back();
-            tris[3 * t] = a;
-            tris[3 * t + 1] = b;
-            tris[3 * t + 2] = c;
-        } else {
-            t = static_cast<std::uint32_t>(tris.size() / 3);
-            tris.insert(tris.end(), {a, b, c});
-            m_->halfedges.insert(m_->halfedges.end(), {-1, -1, -1});
-        }
-        return t;
+        return m_->add_triangle(a, b, c);
     }
-
-    void link(std::int32_t a, std::int32_t b) {
-        m_->halfedges[static_cast<std::size_t>(a)] = b;
-        if (b >= 0) m_->halfedges[static_cast<std::size_t>(b)] = a;
-    }
-
-    void set_next(std::uint32_t a, std::uint32_t b) {
-        m_->hull_next[a] = b;
-        m_->hull_prev[b] = a;
-    }
+    void link(std::int32_t a, std::int32_t b) { m_->link(a, b); }
+    void set_next(std::uint32_t a, std::uint32_t b) { m_->set_hull_next(a, b); }
 
     // Fan of the collinear prefix P[0..k-1] (in order along its line) to P[k] (k >= 2).
     void seed(std::size_t k) {
@@ -212,92 +159,13 @@ private:
         }
         m_->hull_size = k + 1;
         last_ = apex;
-        if constexpr (O == Order::radial) {
-            for (std::uint32_t v = 0; v <= apex; ++v) {
-                bucket_[v] = static_cast<std::uint32_t>(hash_key(pts_[v]));
-                hash_[bucket_[v]] = v;
-            }
-        }
+        starts_.seeded(pts_, apex);
     }
 
     std::optional<Failure> fail(FailureKind kind, std::uint32_t i, std::string what) const {
         return Failure{kind, input_of_[i], i,
                        "insertion of point " + std::to_string(i) + " of the order (input index " +
                            std::to_string(input_of_[i]) + "): " + std::move(what)};
-    }
-
-    // The radial order's angular hash: a pseudo-angle of p - centre (monotone in the angle,
-    // no trigonometry), cut into hash_.size() buckets. Only a starting guess: any bucket is
-    // correct, a good one makes the walk in visible_edge short. The angle is measured from
-    // the direction of the points' bounding-box centre and stretched over the range the
-    // points actually cover: with a centre far outside the points (the osculating centre
-    // of a sampled convex curve) they span a tiny angle, and unstretched buckets would put
-    // them all in one, making the walk linear per point.
-    double pseudo_angle(Point2 p) const {
-        const double dx = p.x - centre_.x, dy = p.y - centre_.y;
-        const double rx = dx * axis_x_ + dy * axis_y_, ry = dy * axis_x_ - dx * axis_y_;
-        const double r = std::abs(rx) + std::abs(ry);
-        if (!(r > 0) || !std::isfinite(r)) return 0;  // the centre itself, or overflow
-        const double q = rx / r;                        // in [-1, 1]
-        return ry >= 0 ? 1 - q : q - 1;                 // in [-2, 2], 0 along the axis
-    }
-    void prepare_hash() {
-        hash_.assign(std::max<std::size_t>(16, static_cast<std::size_t>(std::sqrt(double(pts_.size())))),
-                     dead);
-        bucket_.assign(pts_.size(), 0);
-        const Point2 box = bounding_box_centre(pts_);
-        const double ax = box.x - centre_.x, ay = box.y - centre_.y;
-        const double len = std::abs(ax) + std::abs(ay);
-        if (len > 0 && std::isfinite(len)) axis_x_ = ax / len, axis_y_ = ay / len;
-        angle_lo_ = 2;
-        double hi = -2;
-        for (const Point2& p : pts_) {
-            const double a = pseudo_angle(p);
-            angle_lo_ = std::min(angle_lo_, a);
-            hi = std::max(hi, a);
-        }
-        angle_scale_ = hi > angle_lo_ ? static_cast<double>(hash_.size()) / (hi - angle_lo_) : 0;
-        if (!std::isfinite(angle_scale_)) angle_scale_ = 0;
-    }
-    std::size_t hash_key(Point2 p) const {
-        const double k = (pseudo_angle(p) - angle_lo_) * angle_scale_;
-        if (!(k > 0)) return 0;  // also NaN
-        return std::min(static_cast<std::size_t>(std::min(k, 1e18)), hash_.size() - 1);
-    }
-
-    // Radial order: a hull vertex e whose edge e -> next(e) p sees strictly. The hash gives
-    // a live hull vertex near p's angle; from it the walk tests hull edges with orient2d,
-    // alternately one more forwards and one more backwards, and stops at the first with p
-    // strictly on its right, so the edge returned is visible by the kernel's own answer and
-    // the walk costs the hull distance from the start to the nearest visible edge (a
-    // one-way walk can go round the whole hull: quadratic on a convex curve, where every
-    // point lands in the same bucket). One exists because p is outside the hull (see the
-    // order's argument above); with an inexact kernel the walk may pass every edge without
-    // finding one, and that is reported, not guessed.
-    std::optional<std::uint32_t> visible_edge(Point2 p, std::size_t key) {
-        const auto& next = m_->hull_next;
-        const auto& prev = m_->hull_prev;
-        std::uint32_t start = dead;
-        for (std::size_t j = 0; j < hash_.size(); ++j) {
-            const std::uint32_t v = hash_[(key + j) % hash_.size()];
-            if (v != dead && next[v] != dead) {
-                start = v;
-                break;
-            }
-        }
-        if (start == dead) return std::nullopt;
-        auto sees = [&](std::uint32_t e) {
-            this->count(&Counters::visible_search_orientations);
-            return k_.orient2d(pts_[e], pts_[next[e]], p) == Sign::negative;
-        };
-        std::uint32_t forward = start, backward = prev[start];
-        for (std::size_t tested = 0; tested < m_->hull_size; tested += 2) {
-            if (sees(forward)) return forward;
-            if (sees(backward)) return backward;
-            forward = next[forward];
-            backward = prev[backward];
-        }
-        return std::nullopt;
     }
 
     std::optional<Failure> insert(std::uint32_t i) {
@@ -309,20 +177,17 @@ private:
         auto& half = m_->halfedges;
 
         // Where the tangent walks start: a vertex with a visible edge at it.
-        std::uint32_t from = last_;
-        std::size_t visible = 0;
-        std::uint32_t upper = from;
-        if constexpr (O == Order::radial) {
-            bucket_[i] = static_cast<std::uint32_t>(hash_key(p));
-            const auto e = visible_edge(p, bucket_[i]);
-            if (!e) {
-                return fail(FailureKind::point_inside_hull, i,
-                            "no edge of the current hull is visible from the point");
-            }
-            from = *e;
-            upper = next[from];  // the edge from -> upper is visible: already tested
-            visible = 1;
+        const auto start = starts_.start(p, i, last_, *m_, [&](std::uint32_t e) {
+            this->count(&Counters::visible_search_orientations);
+            return k_.orient2d(pts_[e], pts_[next[e]], p) == Sign::negative;
+        });
+        if (!start) {
+            return fail(FailureKind::point_inside_hull, i,
+                        "no edge of the current hull is visible from the point");
         }
+        const std::uint32_t from = start->from;
+        std::uint32_t upper = start->upper;
+        std::size_t visible = start->visible;
 
         // Tangent walks (Alg. 5 without its farther-point rule). Together they can pass
         // at most hull_size - 1 edges: a point outside the hull cannot see all of them.
@@ -359,7 +224,7 @@ private:
             stack_.push_back({hull_edge[a], v});
             v = a;
         }
-        const std::size_t live = tris.size() / 3 - free_.size();
+        const std::size_t live = m_->live_triangles();
         std::size_t eroded = 0;
         std::uint32_t x = lower;
         border_vertex_.push_back(lower);
@@ -378,9 +243,7 @@ private:
                     stack_.pop_back();
                     stack_.push_back({half[en], top.end});  // c -> end
                     stack_.push_back({half[ep], c});        // x -> c, processed first
-                    const std::size_t t = e / 3;
-                    tris[3 * t] = tris[3 * t + 1] = tris[3 * t + 2] = dead;
-                    free_.push_back(static_cast<std::uint32_t>(t));
+                    m_->remove_triangle(e / 3);
                     this->count(&Counters::eroded_edges);
                     this->count(&Counters::triangles_destroyed);
                     if (++eroded > live) {
@@ -415,48 +278,52 @@ private:
         }
         half[3 * static_cast<std::size_t>(prev_t) + 2] = -1;
         hull_edge[i] = 3 * prev_t + 2;  // p -> upper
-        if constexpr (O == Order::radial) {
-            // Vertices strictly between the tangent points leave the hull: the hash must
-            // not propose them again.
-            for (std::uint32_t v = next[lower]; v != upper;) {
-                const std::uint32_t w = next[v];
-                next[v] = dead;
-                v = w;
-            }
-        }
+        starts_.inserted(*m_, i, lower, upper);
         set_next(lower, i);
         set_next(i, upper);
         m_->hull_size = m_->hull_size + 2 - visible;
         last_ = i;
-        if constexpr (O == Order::radial) {
-            // The new point always takes its bucket; the tangent points only refill
-            // buckets whose vertex left the hull. Overwriting a live entry with a tangent
-            // point can move a bucket's start to the far end of a long chain (on a convex
-            // curve the tangent is often the opposite end of the arc), and then every
-            // later point in that bucket walks the whole chain.
-            for (const std::uint32_t v : {lower, upper}) {
-                std::uint32_t& slot = hash_[bucket_[v]];
-                if (slot == dead || next[slot] == dead) slot = v;
-            }
-            hash_[bucket_[i]] = i;
-        }
         return std::nullopt;
     }
 
     const K& k_;
     std::span<const Point2> pts_;
     std::span<const std::uint32_t> input_of_;
-    Point2 centre_;
+    Starts starts_;
     Mesh* m_ = nullptr;
-    std::vector<std::uint32_t> free_;  // slots of eroded triangles, reused by connect
     std::vector<Pending> stack_;       // reused by every insertion: no allocation
     std::vector<std::uint32_t> border_vertex_;
     std::vector<std::int32_t> border_behind_;
-    std::vector<std::uint32_t> hash_;  // radial: bucket -> a hull vertex (or dead)
-    std::vector<std::uint32_t> bucket_;  // radial: inserted vertex -> its bucket
-    double axis_x_ = 1, axis_y_ = 0;   // radial: the direction the hash angle starts from
-    double angle_lo_ = 0, angle_scale_ = 0;
     std::uint32_t last_ = 0;
 };
+
+/// The vertex ids of a radial run: mesh vertex j is sorted position order[j], input index
+/// input_of[j].
+struct RadialIds {
+    std::vector<std::uint32_t> order, input_of;
+};
+
+/// One external incremental run in radial order over `points` (sorted, distinct, not
+/// empty): about their radial centre, exact distance order, the collinear prefix sorted
+/// back into position order. `input_of` maps positions to input indices. Counters are
+/// added to `counters`.
+template <PredicateKernel K, Instrumentation I, InCirclePolicy P>
+std::optional<Failure> build_radial(const K& kernel, std::span<const Point2> points,
+                                    std::span<const std::uint32_t> input_of, RadialIds& ids,
+                                    Mesh& mesh, Counters& counters) {
+    const Point2 centre = radial_centre(points);
+    ids.order = radial_order(points, centre, kernel);
+    sort_collinear_prefix(points, std::span<std::uint32_t>(ids.order), kernel);
+    std::vector<Point2> local(ids.order.size());
+    ids.input_of.resize(ids.order.size());
+    for (std::size_t j = 0; j < ids.order.size(); ++j) {
+        local[j] = points[ids.order[j]];
+        ids.input_of[j] = input_of[ids.order[j]];
+    }
+    Builder<K, I, P, RadialHullHash> builder(kernel, local, ids.input_of, RadialHullHash(centre));
+    auto failure = builder.run(mesh);
+    counters += builder.counters();
+    return failure;
+}
 
 }  // namespace exidel::delaunay::detail

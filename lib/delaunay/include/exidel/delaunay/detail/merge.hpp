@@ -37,7 +37,8 @@
 #include <string>
 #include <vector>
 
-#include "exidel/delaunay/detail/builder.hpp"
+#include "exidel/delaunay/detail/counting.hpp"
+#include "exidel/delaunay/detail/mesh.hpp"
 #include "exidel/delaunay/result.hpp"
 #include "exidel/predicates/kernel.hpp"
 

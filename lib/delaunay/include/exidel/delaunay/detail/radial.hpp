@@ -44,6 +44,16 @@ inline Point2 bounding_box_centre(std::span<const Point2> points) {
     return {x0 / 2 + x1 / 2, y0 / 2 + y1 / 2};
 }
 
+/// The circumcentre of a, b, c minus a, in plain floating point (delaunator's formula):
+/// a heuristic's estimate, with no error bound. Infinite or NaN when a, b, c are collinear
+/// (the determinant is zero) or the result overflows.
+inline Point2 circumcentre_offset(Point2 a, Point2 b, Point2 c) {
+    const double bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;
+    const double bl = bx * bx + by * by, cl = cx * cx + cy * cy;
+    const double det = 2 * (bx * cy - by * cx);
+    return {(cy * bl - by * cl) / det, (bx * cl - cx * bl) / det};
+}
+
 /// The centre of the radial order, chosen as delaunator does: the point nearest the
 /// bounding-box centre, its nearest neighbour, and the point making the smallest
 /// circumcircle with them; the centre is that circumcircle's centre. Any finite centre
@@ -81,17 +91,11 @@ inline Point2 radial_centre(std::span<const Point2> points) {
     bool found = false;
     for (std::size_t i = 0; i < points.size(); ++i) {
         if (i == i0 || i == i1) continue;
-        // Circumcentre of a, b, points[i] relative to a (delaunator's formula).
-        const double bx = b.x - a.x, by = b.y - a.y;
-        const double cx = points[i].x - a.x, cy = points[i].y - a.y;
-        const double bl = bx * bx + by * by, cl = cx * cx + cy * cy;
-        const double det = bx * cy - by * cx;
-        if (det == 0) continue;
-        const double ux = (cy * bl - by * cl) / (2 * det), uy = (bx * cl - cx * bl) / (2 * det);
-        const double r = ux * ux + uy * uy;
-        // NaN and infinity fail both comparisons and are skipped.
+        const Point2 u = circumcentre_offset(a, b, points[i]);
+        const double r = u.x * u.x + u.y * u.y;
+        // NaN and infinity (collinear points) fail both comparisons and are skipped.
         if (r < std::numeric_limits<double>::infinity() && (!found || r < best_r)) {
-            const Point2 c{a.x + ux, a.y + uy};
+            const Point2 c{a.x + u.x, a.y + u.y};
             if (std::isfinite(c.x) && std::isfinite(c.y)) best = c, best_r = r, found = true;
         }
     }

@@ -112,20 +112,12 @@ std::optional<Failure> build_strips(const K& kernel, std::span<const Point2> pts
     auto build_strip = [&](std::size_t s, Counters& into) -> std::optional<Failure> {
         const std::uint32_t a = cuts[s], b = cuts[s + 1];
         const auto strip = pts.subspan(a, b - a);
-        const Point2 centre = radial_centre(strip);
-        std::vector<std::uint32_t> order = radial_order(strip, centre, kernel);
-        sort_collinear_prefix(strip, order, kernel);
-        std::vector<Point2> local(order.size());
-        std::vector<std::uint32_t> local_input(order.size());
-        for (std::size_t j = 0; j < order.size(); ++j) {
-            local[j] = strip[order[j]];
-            local_input[j] = input_of[a + order[j]];
-        }
+        RadialIds ids;
         Mesh part;
-        Builder<K, I, P, Order::radial> builder(kernel, local, local_input, centre);
-        auto failure = builder.run(part);
-        into += builder.counters();
+        auto failure = build_radial<K, I, P>(kernel, strip, input_of.subspan(a, b - a), ids, part,
+                                             into);
         if (failure) return failure;
+        const std::vector<std::uint32_t>& order = ids.order;
         if (part.collinear) {
             return Failure{FailureKind::merge_inconsistent, input_of[a], a,
                            "strip [" + std::to_string(a) + ", " + std::to_string(b) +

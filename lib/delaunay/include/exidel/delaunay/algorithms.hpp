@@ -1,0 +1,63 @@
+// exidel: the one list of triangulation algorithms.
+//
+// EXIDEL_DELAUNAY_ALGORITHMS(X) expands X(name, Type, takes_order, "summary") once per
+// algorithm, in the order help texts and studies list them:
+//   name     the enumerator of Algorithm and the spelling on every command line, in
+//            --stats ("algorithm") and in the research tables;
+//   Type     detail::Type, the algorithm: one header in detail/ with
+//              template <PredicateKernel K, Instrumentation I, InCirclePolicy P>
+//              static Result run(const K&, detail::SortedInput&, const Options&);
+//            over the shared mesh (detail/mesh.hpp), included by triangulate.hpp;
+//   takes_order  whether Options::strategy (--order) chooses how it runs; the studies run
+//            such an algorithm once per order;
+//   summary  one line: what it does and what it costs.
+// Everything that enumerates algorithms (triangulate's dispatch, `exidel triangulate
+// --algorithm`, `exidel study triangulation --algorithm`, the benchmark) reads this list,
+// so a new algorithm is its header, its #include in triangulate.hpp and one line here.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+// clang-format off
+#define EXIDEL_DELAUNAY_ALGORITHMS(X)                                                          \
+    X(external, ExternalIncremental, true,                                                     \
+      "Cai 2025: each point added outside the hull, no point location; "                      \
+      "O(n log n) expected in the radial and strips orders")
+// clang-format on
+
+namespace exidel::delaunay {
+
+/// Which algorithm triangulate() runs (Options::algorithm).
+enum class Algorithm : std::uint8_t {
+#define EXIDEL_ALGORITHM_ENUMERATOR_(name, Type, takes_order, summary) name,
+    EXIDEL_DELAUNAY_ALGORITHMS(EXIDEL_ALGORITHM_ENUMERATOR_)
+#undef EXIDEL_ALGORITHM_ENUMERATOR_
+};
+
+struct AlgorithmInfo {
+    Algorithm id;
+    std::string_view name;
+    bool takes_order;  ///< Options::strategy applies
+    std::string_view summary;
+};
+
+/// Every algorithm, in list order.
+std::span<const AlgorithmInfo> algorithms() noexcept;
+
+std::string_view to_string(Algorithm algorithm) noexcept;
+
+/// The algorithm a name spells; nullopt for anything else.
+std::optional<Algorithm> algorithm_from_name(std::string_view name) noexcept;
+
+/// "external|...", for usage lines and error messages.
+std::string algorithm_spellings();
+
+/// One line per algorithm, "  <name>  <summary>", for --help texts.
+std::string algorithm_help();
+
+}  // namespace exidel::delaunay

@@ -1,0 +1,78 @@
+// exidel: the external incremental Delaunay triangulation (Yifeng Cai 2025) as a
+// registered algorithm (algorithms.hpp: `external`). Its option is the insertion order,
+// Options::strategy:
+//
+//   lexicographic  the paper's algorithm, unchanged: one run in (x, y) order. The
+//                  reference, and quadratic on a sampled convex curve (each point erodes
+//                  the whole visible chain).
+//   radial         one run in ascending exact distance from a centre (radial.hpp): fewer
+//                  flips on random input and near-linear on convex curves; still
+//                  external, no point location.
+//   strips         lexicographic strips, each triangulated in radial order, merged by the
+//                  Guibas-Stolfi zipper, on one or more threads (strips.hpp).
+//   automatic      radial below automatic_strips_from points, strips above, except on
+//                  points along a convex curve that the radial order follows
+//                  (curve_rule.hpp), where radial stays.
+//
+// The insertion itself is builder.hpp, the merge merge.hpp.
+#pragma once
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "exidel/delaunay/detail/builder.hpp"
+#include "exidel/delaunay/detail/curve_rule.hpp"
+#include "exidel/delaunay/detail/mesh.hpp"
+#include "exidel/delaunay/detail/strips.hpp"
+#include "exidel/delaunay/external.hpp"
+#include "exidel/delaunay/result.hpp"
+#include "exidel/predicates/kernel.hpp"
+
+namespace exidel::delaunay::detail {
+
+struct ExternalIncremental {
+    template <PredicateKernel K, Instrumentation I, InCirclePolicy P>
+    static void run(const K& kernel, const SortedInput& in, const Options& options,
+                    MeshOutput& out, Result& result) {
+        const std::size_t n = in.points.size();
+        result.strategy = choose_strategy(n, options.strategy);
+        if (options.strategy == Strategy::automatic && result.strategy == Strategy::strips &&
+            radial_follows_curve(in.points, kernel)) {
+            result.strategy = Strategy::radial;
+        }
+        Mesh& mesh = out.mesh;
+        auto radial = [&](Strategy reported) {
+            result.strategy = reported;
+            RadialIds ids;
+            result.failure = build_radial<K, I, P>(kernel, in.points, in.input_of, ids, mesh,
+                                                   result.counters);
+            for (std::size_t j = 0; j < n; ++j) {
+                if (ids.order[j] == 0) out.first = static_cast<std::uint32_t>(j);
+            }
+            out.input_of = std::move(ids.input_of);
+        };
+        if (n < 3) {
+            mesh.collinear = true;
+        } else if (result.strategy == Strategy::lexicographic) {
+            Builder<K, I, P, LastPointStart> builder(kernel, in.points, in.input_of);
+            result.failure = builder.run(mesh);
+            result.counters = builder.counters();
+        } else if (result.strategy == Strategy::radial) {
+            radial(Strategy::radial);
+        } else {
+            const std::size_t target =
+                options.strip_points != 0 ? options.strip_points : default_strip_points(n);
+            const std::vector<std::uint32_t> cuts = strip_cuts(in.points, target, kernel);
+            result.strips = cuts.size() - 1;
+            if (result.strips == 1) {
+                radial(Strategy::strips);  // one strip: its radial run is the whole job
+            } else {
+                result.failure = build_strips<K, I, P>(kernel, in.points, in.input_of, cuts,
+                                                       options.threads, mesh, result.counters);
+            }
+        }
+    }
+};
+
+}  // namespace exidel::delaunay::detail

@@ -1,0 +1,130 @@
+// Every algorithm of the registry (exidel/delaunay/algorithms.hpp), one test body each:
+// the template a new algorithm inherits by its one line in that list. With an exact
+// kernel its result is certified and has CGAL's forced edges (and CGAL's triangles when
+// no four points are cocircular); with the double kernel it may be wrong but returns a
+// result or a typed failure. The names round-trip, and an unknown one is an error.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <set>
+#include <string>
+#include <vector>
+
+#include "delaunay_support.hpp"
+#include "exidel/delaunay/algorithms.hpp"
+#include "exidel/delaunay/certify.hpp"
+#include "exidel/delaunay/triangulate.hpp"
+
+namespace {
+
+using namespace exidel;
+using namespace exidel::delaunay;
+using exidel::test::EdgeSets;
+
+/// Options for `algorithm`, its order (if it takes one) and knobs drawn at random.
+rc::Gen<Options> gen_options(const AlgorithmInfo& algorithm) {
+    return rc::gen::exec([algorithm] {
+        Options o;
+        o.algorithm = algorithm.id;
+        if (algorithm.takes_order) {
+            o.strategy = *rc::gen::element(Strategy::automatic, Strategy::lexicographic,
+                                           Strategy::radial, Strategy::strips);
+        }
+        o.incircle = *rc::gen::element(InCirclePolicy::determinant, InCirclePolicy::cosine);
+        o.strip_points = *rc::gen::inRange<std::size_t>(1, 40);
+        o.threads = *rc::gen::inRange(1u, 3u);
+        return o;
+    });
+}
+
+std::string describe(const Options& o) {
+    return std::string(to_string(o.algorithm)) + " " + std::string(to_string(o.strategy)) +
+           (o.incircle == InCirclePolicy::cosine ? " cosine" : " determinant");
+}
+
+template <class K>
+void check_exact(const AlgorithmInfo& algorithm, std::size_t max_points) {
+    const auto s = *test::gen_point_set(max_points);
+    const Options o = *gen_options(algorithm);
+    RC_TAG(s.family);
+    const Result r = triangulate<Instrumentation::counters>(s.points, K{}, o);
+    if (!r.ok()) RC_FAIL(describe(o) + ": " + r.failure->message);
+    RC_ASSERT(r.algorithm == algorithm.id);
+    const Certificate c = certify(s.points, r.triangulation);
+    if (!c.ok()) RC_FAIL(describe(o) + ": certify: " + c.summary());
+    RC_ASSERT(r.counters.triangles_created - r.counters.triangles_destroyed ==
+              r.triangulation.triangle_count());
+    const EdgeSets oracle = test::cgal_edge_sets(s.points);
+    const EdgeSets ours = test::edge_sets(s.points, r.triangulation);
+    RC_ASSERT(ours.collinear == oracle.collinear);
+    RC_ASSERT(ours.forced == oracle.forced);
+    if (ours.free_edges == 0) RC_ASSERT(ours.triangles == oracle.triangles);
+}
+
+class EveryAlgorithm : public ::testing::TestWithParam<AlgorithmInfo> {};
+
+TEST_P(EveryAlgorithm, AdaptiveMatchesCgal) {
+    EXPECT_TRUE(rc::check(std::string(GetParam().name) + ", adaptive",
+                          [&] { check_exact<AdaptiveKernel>(GetParam(), 160); }));
+}
+
+TEST_P(EveryAlgorithm, ExactKernelsMatchCgal) {
+    EXPECT_TRUE(rc::check(std::string(GetParam().name) + ", exact",
+                          [&] { check_exact<GmpExactKernel>(GetParam(), 40); }));
+    EXPECT_TRUE(rc::check(std::string(GetParam().name) + ", exact-cpp",
+                          [&] { check_exact<CppIntExactKernel>(GetParam(), 40); }));
+}
+
+// An inexact kernel may give a wrong triangulation, never a crash, a hang or an
+// untyped result: either ok() with arrays of the right shape, or a failure with a
+// message.
+TEST_P(EveryAlgorithm, DoubleKernelReturnsAResultOrATypedFailure) {
+    EXPECT_TRUE(rc::check(std::string(GetParam().name) + ", double", [&] {
+        const auto s = *test::gen_point_set(160);
+        const Options o = *gen_options(GetParam());
+        const Result r = triangulate(s.points, DoubleKernel{}, o);
+        RC_TAG(r.ok() ? std::string("ok") : std::string(to_string(r.failure->kind)));
+        if (r.ok()) {
+            RC_ASSERT(r.triangulation.triangles.size() == r.triangulation.halfedges.size());
+            RC_ASSERT(r.triangulation.vertex_of_input.size() == s.points.size());
+        } else {
+            RC_ASSERT(!r.failure->message.empty());
+        }
+    }));
+}
+
+std::string name_of(const ::testing::TestParamInfo<AlgorithmInfo>& info) {
+    return std::string(info.param.name);
+}
+
+INSTANTIATE_TEST_SUITE_P(Registry, EveryAlgorithm, ::testing::ValuesIn(algorithms().begin(),
+                                                                       algorithms().end()),
+                         name_of);
+
+TEST(AlgorithmRegistry, NamesRoundTripAndAreListed) {
+    ASSERT_FALSE(algorithms().empty());
+    std::set<std::string> names;
+    for (const AlgorithmInfo& a : algorithms()) {
+        EXPECT_EQ(to_string(a.id), a.name);
+        EXPECT_EQ(algorithm_from_name(a.name), a.id);
+        EXPECT_FALSE(a.summary.empty()) << a.name;
+        EXPECT_NE(algorithm_spellings().find(a.name), std::string::npos) << a.name;
+        EXPECT_NE(algorithm_help().find(a.summary), std::string::npos) << a.name;
+        EXPECT_TRUE(names.insert(std::string(a.name)).second) << "repeated name " << a.name;
+    }
+    EXPECT_EQ(algorithm_from_name("no-such-algorithm"), std::nullopt);
+    EXPECT_EQ(algorithm_from_name(""), std::nullopt);
+    EXPECT_EQ(Options{}.algorithm, Algorithm::external);  // the paper's algorithm by default
+}
+
+// A value outside the enumeration (a cast from a stale integer) is reported, not run.
+TEST(AlgorithmRegistry, AnAlgorithmOutsideTheListIsATypedFailure) {
+    Options o;
+    o.algorithm = static_cast<Algorithm>(200);
+    const std::vector<Point2> pts{{0, 0}, {1, 0}, {0, 1}};
+    const Result r = triangulate(pts, AdaptiveKernel{}, o);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.failure->kind, FailureKind::unknown_algorithm);
+}
+
+}  // namespace
