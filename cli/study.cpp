@@ -233,9 +233,15 @@ research::FailureMapOptions failure_map_options(const Parsed& p) {
     return o;
 }
 
-void print_result(const research::StudyResult& r, const research::RunOptions& run, double seconds) {
+// Announces the study, runs it, writes its report and prints its main table and where
+// the report is.
+template <class StudyOptions, class Run, class Seconds>
+void run_and_report(const Parsed& p, const StudyOptions& o, Run run, Seconds seconds) {
+    std::cout << p.study << ": seed " << p.run.seed << ", output " << p.run.out.string() << '\n';
+    const auto r = run(o, p.run);
+    research::write_text_file(p.run.out / "report.md", r.report.render());
     std::cout << r.table.text();
-    std::printf("\nreport: %s  (%.1f s)\n", (run.out / "report.md").c_str(), seconds);
+    std::printf("\nreport: %s  (%.1f s)\n", (p.run.out / "report.md").c_str(), seconds());
 }
 
 }  // namespace
@@ -264,10 +270,7 @@ int study_command(std::span<const std::string_view> args) {
                 return exit_ok;
             }
             const FailureMapOptions o = failure_map_options(p);
-            std::cout << "failure-map: seed " << p.run.seed << ", output " << p.run.out.string() << '\n';
-            const FailureMapStudy r = run_failure_map_study(o, p.run);
-            write_text_file(p.run.out / "report.md", r.report.render());
-            print_result(r, p.run, seconds());
+            run_and_report(p, o, run_failure_map_study, seconds);
         } else if (p.study == "precision") {
             PrecisionOptions o;
             if (p.bits) {
@@ -275,10 +278,7 @@ int study_command(std::span<const std::string_view> args) {
             }
             if (p.families) o.families = parse_families(*p.families);
             if (p.samples) o.samples = *p.samples;
-            std::cout << "precision: seed " << p.run.seed << ", output " << p.run.out.string() << '\n';
-            const PrecisionStudy r = run_precision_study(o, p.run);
-            write_text_file(p.run.out / "report.md", r.report.render());
-            print_result(r, p.run, seconds());
+            run_and_report(p, o, run_precision_study, seconds);
         } else if (p.study == "triangulation") {
             TriangulationOptions o;
             if (p.kernels) o.kernels = split(*p.kernels, ',');
@@ -289,20 +289,14 @@ int study_command(std::span<const std::string_view> args) {
             if (p.shrink) o.shrink_per_class = *p.shrink;
             if (p.order) o.orders = parse_orders(*p.order);
             if (p.algorithms) o.algorithms = parse_algorithms(*p.algorithms);
-            std::cout << "triangulation: seed " << p.run.seed << ", output " << p.run.out.string() << '\n';
-            const TriangulationStudy r = run_triangulation_study(o, p.run);
-            write_text_file(p.run.out / "report.md", r.report.render());
-            print_result(r, p.run, seconds());
+            run_and_report(p, o, run_triangulation_study, seconds);
         } else if (p.study == "stages") {
             StagesOptions o;
             if (p.families) o.families = parse_families(*p.families);
             if (p.samples) o.samples = *p.samples;
             if (p.seeds) o.seeds = *p.seeds;
             if (p.size) o.size = *p.size;
-            std::cout << "stages: seed " << p.run.seed << ", output " << p.run.out.string() << '\n';
-            const StagesStudy r = run_stages_study(o, p.run);
-            write_text_file(p.run.out / "report.md", r.report.render());
-            print_result(r, p.run, seconds());
+            run_and_report(p, o, run_stages_study, seconds);
         } else if (p.study == "all") {
             run_all_studies(p.run);
             std::printf("\nall studies done in %.1f s; report: %s\n", seconds(), (p.run.out / "report.md").c_str());

@@ -2,7 +2,6 @@
 #include "exidel/predicates/registry.hpp"
 
 #include <algorithm>
-#include <array>
 #include <charconv>
 #include <utility>
 
@@ -38,42 +37,38 @@ std::optional<MpfrKernel> make_kernel<MpfrKernel>(std::string_view name, std::st
     return MpfrKernel(bits);
 }
 
-struct Entry {
-    std::string_view spelling, summary;
-};
-#define EXIDEL_KERNEL_ENTRY_(K, spelling, summary) Entry{spelling, summary},
-constexpr Entry entries[] = {EXIDEL_KERNELS(EXIDEL_KERNEL_ENTRY_)};
+#define EXIDEL_KERNEL_ENTRY_(K, spelling, summary) HelpEntry{spelling, summary},
+constexpr HelpEntry entries[] = {EXIDEL_KERNELS(EXIDEL_KERNEL_ENTRY_)};
 #undef EXIDEL_KERNEL_ENTRY_
-
-constexpr auto spellings = [] {
-    std::array<char, 256> out{};
-    std::size_t n = 0;
-    for (const Entry& e : entries) {
-        if (n > 0) out[n++] = '|';
-        for (const char c : e.spelling) out[n++] = c;
-    }
-    return std::pair{out, n};
-}();
 
 }  // namespace
 
-std::string_view kernel_spellings() noexcept {
-    return {spellings.first.data(), spellings.second};
-}
-
-std::string kernel_help() {
+std::string format_help(std::span<const HelpEntry> list) {
     std::size_t width = 0;
-    for (const Entry& e : entries) width = std::max(width, e.spelling.size());
+    for (const HelpEntry& e : list) width = std::max(width, e.name.size());
     std::string out;
-    for (const Entry& e : entries) {
+    for (const HelpEntry& e : list) {
         out += "  ";
-        out += e.spelling;
-        out.append(width + 2 - e.spelling.size(), ' ');
+        out += e.name;
+        out.append(width + 2 - e.name.size(), ' ');
         out += e.summary;
         out += '\n';
     }
     return out;
 }
+
+std::string join_names(std::span<const HelpEntry> list) {
+    std::string out;
+    for (const HelpEntry& e : list) {
+        if (!out.empty()) out += '|';
+        out += e.name;
+    }
+    return out;
+}
+
+std::string kernel_spellings() { return join_names(entries); }
+
+std::string kernel_help() { return format_help(entries); }
 
 std::optional<AnyKernel> parse_kernel(std::string_view name, std::string& error) {
     error.clear();

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <ostream>
 #include <set>
 #include <string>
 #include <vector>
@@ -14,6 +15,11 @@
 #include "exidel/delaunay/algorithms.hpp"
 #include "exidel/delaunay/certify.hpp"
 #include "exidel/delaunay/triangulate.hpp"
+
+// Test names and failure messages show an algorithm by its name.
+namespace exidel::delaunay {
+void PrintTo(const AlgorithmInfo& a, std::ostream* os) { *os << a.name; }
+}  // namespace exidel::delaunay
 
 namespace {
 

@@ -1,7 +1,9 @@
 // exidel: algorithms by name, from the one list in algorithms.hpp.
 #include "exidel/delaunay/algorithms.hpp"
 
-#include <algorithm>
+#include <vector>
+
+#include "exidel/predicates/registry.hpp"
 
 namespace exidel::delaunay {
 
@@ -11,6 +13,12 @@ namespace {
     AlgorithmInfo{Algorithm::name, #name, takes_order, summary},
 constexpr AlgorithmInfo table[] = {EXIDEL_DELAUNAY_ALGORITHMS(EXIDEL_ALGORITHM_INFO_)};
 #undef EXIDEL_ALGORITHM_INFO_
+
+std::vector<HelpEntry> help_entries() {
+    std::vector<HelpEntry> out;
+    for (const AlgorithmInfo& a : table) out.push_back({a.name, a.summary});
+    return out;
+}
 
 }  // namespace
 
@@ -30,27 +38,8 @@ std::optional<Algorithm> algorithm_from_name(std::string_view name) noexcept {
     return std::nullopt;
 }
 
-std::string algorithm_spellings() {
-    std::string out;
-    for (const AlgorithmInfo& a : table) {
-        if (!out.empty()) out += '|';
-        out += a.name;
-    }
-    return out;
-}
+std::string algorithm_spellings() { return join_names(help_entries()); }
 
-std::string algorithm_help() {
-    std::size_t width = 0;
-    for (const AlgorithmInfo& a : table) width = std::max(width, a.name.size());
-    std::string out;
-    for (const AlgorithmInfo& a : table) {
-        out += "  ";
-        out += a.name;
-        out.append(width + 2 - a.name.size(), ' ');
-        out += a.summary;
-        out += '\n';
-    }
-    return out;
-}
+std::string algorithm_help() { return format_help(help_entries()); }
 
 }  // namespace exidel::delaunay

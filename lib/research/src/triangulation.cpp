@@ -7,7 +7,11 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <optional>
+#include <span>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 #include <tuple>
 
 #include "exidel/delaunay/certify.hpp"
@@ -129,6 +133,33 @@ WorkSample measure_work(std::span<const Point2> points, const Method& method) {
     return w;
 }
 
+/// The items a comma-separated list of names and "all" (every item of `all`) spells, in
+/// the order given, repeats dropped; `lookup` maps a name to an item. Throws
+/// std::invalid_argument naming the `expected` spellings.
+template <class T, class Lookup>
+std::vector<T> parse_names(std::string_view list, std::span<const T> all, Lookup lookup,
+                           const std::string& what, const std::string& expected) {
+    std::vector<T> out;
+    const auto add = [&](T item) {
+        if (std::find(out.begin(), out.end(), item) == out.end()) out.push_back(item);
+    };
+    while (!list.empty()) {
+        const std::size_t comma = list.find(',');
+        const std::string_view name = list.substr(0, comma);
+        if (name == "all") {
+            for (T item : all) add(item);
+        } else if (const std::optional<T> item = lookup(name)) {
+            add(*item);
+        } else {
+            throw std::invalid_argument("unknown " + what + " '" + std::string(name) + "' (expected " +
+                                        expected + ")");
+        }
+        list = comma == std::string_view::npos ? std::string_view{} : list.substr(comma + 1);
+    }
+    if (out.empty()) throw std::invalid_argument("empty " + what + " list");
+    return out;
+}
+
 std::string describe(const Classification& c) {
     return std::string(to_string(c.outcome)) + (c.detail.empty() ? "" : " (" + c.detail + ")");
 }
@@ -170,51 +201,23 @@ std::vector<Method> methods_of(std::span<const delaunay::Algorithm> algorithms,
     return out;
 }
 
-std::vector<delaunay::Algorithm> parse_algorithms(std::string_view list) {
-    std::vector<delaunay::Algorithm> out;
-    const auto add = [&](delaunay::Algorithm a) {
-        if (std::find(out.begin(), out.end(), a) == out.end()) out.push_back(a);
-    };
-    while (!list.empty()) {
-        const std::size_t comma = list.find(',');
-        const std::string_view name = list.substr(0, comma);
-        if (name == "all") {
-            for (const delaunay::AlgorithmInfo& info : delaunay::algorithms()) add(info.id);
-        } else if (const auto a = delaunay::algorithm_from_name(name)) {
-            add(*a);
-        } else {
-            throw std::invalid_argument("unknown algorithm '" + std::string(name) + "' (expected " +
-                                        delaunay::algorithm_spellings() + " or all)");
-        }
-        list = comma == std::string_view::npos ? std::string_view{} : list.substr(comma + 1);
-    }
-    if (out.empty()) throw std::invalid_argument("empty algorithm list");
-    return out;
+std::vector<delaunay::Strategy> parse_orders(std::string_view list) {
+    return parse_names<delaunay::Strategy>(
+        list, all_orders,
+        [](std::string_view name) -> std::optional<delaunay::Strategy> {
+            for (delaunay::Strategy s : all_orders) {
+                if (delaunay::to_string(s) == name) return s;
+            }
+            return std::nullopt;
+        },
+        "order", "lexicographic, radial, strips or all");
 }
 
-std::vector<delaunay::Strategy> parse_orders(std::string_view list) {
-    std::vector<delaunay::Strategy> out;
-    const auto add = [&](delaunay::Strategy s) {
-        if (std::find(out.begin(), out.end(), s) == out.end()) out.push_back(s);
-    };
-    while (!list.empty()) {
-        const std::size_t comma = list.find(',');
-        const std::string_view name = list.substr(0, comma);
-        if (name == "all") {
-            for (delaunay::Strategy s : all_orders) add(s);
-        } else {
-            const auto* it = std::find_if(all_orders.begin(), all_orders.end(),
-                                          [&](delaunay::Strategy s) { return delaunay::to_string(s) == name; });
-            if (it == all_orders.end()) {
-                throw std::invalid_argument("unknown order '" + std::string(name) +
-                                            "' (expected lexicographic, radial, strips or all)");
-            }
-            add(*it);
-        }
-        list = comma == std::string_view::npos ? std::string_view{} : list.substr(comma + 1);
-    }
-    if (out.empty()) throw std::invalid_argument("empty order list");
-    return out;
+std::vector<delaunay::Algorithm> parse_algorithms(std::string_view list) {
+    std::vector<delaunay::Algorithm> every;
+    for (const delaunay::AlgorithmInfo& info : delaunay::algorithms()) every.push_back(info.id);
+    return parse_names<delaunay::Algorithm>(list, every, delaunay::algorithm_from_name, "algorithm",
+                                            delaunay::algorithm_spellings() + " or all");
 }
 
 Classification classify_triangulation(std::span<const Point2> points, const Kernel& kernel,

@@ -1,8 +1,12 @@
 // A consumer of exidel: decides orient2d on a degenerate and an ulp-perturbed
-// configuration with the adaptive and the exact kernel. Exit code 0 iff every sign is the
-// known exact answer.
+// configuration with the adaptive and the exact kernel, and (with exidel::delaunay)
+// triangulates with every kernel and algorithm of the registries. Exit code 0 iff every
+// sign is the known exact answer and every triangulation is right.
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <string>
+#include <variant>
 
 #include <exidel/predicates/all.hpp>
 #ifdef EXIDEL_CONSUMER_HAS_DELAUNAY
@@ -35,11 +39,45 @@ void check(const char* kernel) {
     expect("p one ulp below", Kernel::orient2d(below, q, r), exidel::Sign::negative);
 }
 
+#ifdef EXIDEL_CONSUMER_HAS_DELAUNAY
+// Every kernel of the registry, by name, triangulates four cocircular points with every
+// algorithm of the registry: the instantiations compiled in the installed library link,
+// and the exact kernels' results are certified.
+void triangulate_with_every_kernel() {
+    const exidel::Point2 square[] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    for (const char* name : {"double", "long-double", "adaptive", "exact", "exact-cpp", "mpfr:64"}) {
+        std::string error;
+        const std::optional<exidel::AnyKernel> kernel = exidel::parse_kernel(name, error);
+        if (!kernel) {
+            std::printf("FAIL kernel %s: %s\n", name, error.c_str());
+            ++failures;
+            continue;
+        }
+        for (const exidel::delaunay::AlgorithmInfo& a : exidel::delaunay::algorithms()) {
+            exidel::delaunay::Options options;
+            options.algorithm = a.id;
+            const exidel::delaunay::Result r = std::visit(
+                [&](const auto& k) { return exidel::delaunay::triangulate(square, k, options); },
+                *kernel);
+            const bool exact = exidel::kernel_is_exact(*kernel);
+            if (!r.ok() || r.triangulation.triangle_count() != 2 ||
+                (exact && !exidel::delaunay::certify(square, r.triangulation).ok())) {
+                std::printf("FAIL triangulate with %s, %s\n", name, std::string(a.name).c_str());
+                ++failures;
+            }
+        }
+    }
+}
+#endif
+
 }  // namespace
 
 int main() {
     check<exidel::AdaptiveKernel>("adaptive");
     check<exidel::GmpExactKernel>("exact");
+#ifdef EXIDEL_CONSUMER_HAS_DELAUNAY
+    triangulate_with_every_kernel();
+#endif
     if (failures == 0) std::printf("exidel consumer: all signs exact\n");
     return failures == 0 ? 0 : 1;
 }

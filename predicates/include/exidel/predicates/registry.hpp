@@ -13,6 +13,7 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -59,8 +60,17 @@ using KernelTypes = decltype(Types<>{} EXIDEL_KERNELS(EXIDEL_KERNEL_TYPE_));
 /// inner loop is compiled per kernel type and no per-query dispatch remains).
 using AnyKernel = detail::KernelTypes::apply<std::variant>;
 
+/// An entry of a registry (kernels here, algorithms in lib/delaunay) as help texts show it.
+struct HelpEntry {
+    std::string_view name, summary;
+};
+/// "  <name>  <summary>\n" per entry, the names padded to one column.
+std::string format_help(std::span<const HelpEntry> entries);
+/// The names joined by '|'.
+std::string join_names(std::span<const HelpEntry> entries);
+
 /// "double|long-double|adaptive|exact|exact-cpp|mpfr:<bits>", for usage lines.
-std::string_view kernel_spellings() noexcept;
+std::string kernel_spellings();
 
 /// One line per kernel, "  <spelling>  <summary>", for --help texts.
 std::string kernel_help();
