@@ -26,8 +26,7 @@
 // clang-format off
 #define EXIDEL_DELAUNAY_ALGORITHMS(X)                                                          \
     X(external, ExternalIncremental, true,                                                     \
-      "Cai 2025: each point added outside the hull, no point location; "                      \
-      "O(n log n) expected in the radial and strips orders")
+      "Cai 2025, each point outside the hull; O(n log n) expected (radial, strips)")
 // clang-format on
 
 namespace exidel::delaunay {
