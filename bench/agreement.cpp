@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "exidel/predicates/all.hpp"
+#include "exidel/testing/ulp.hpp"
 #include "generators.hpp"
 
 namespace {
@@ -29,28 +30,11 @@ namespace {
 using namespace exidel;
 using exidel::bench::Quad;
 
-enum class Predicate { orient2d, incircle, incircle_cosine };
-constexpr std::array all_predicates{Predicate::orient2d, Predicate::incircle,
-                                    Predicate::incircle_cosine};
+// The predicates the table compares (compare_distance has no CGAL counterpart here).
+constexpr std::array table_predicates{Predicate::orient2d, Predicate::incircle,
+                                      Predicate::incircle_cosine};
 
-const char* name_of(Predicate p) {
-    switch (p) {
-        case Predicate::orient2d: return "orient2d";
-        case Predicate::incircle: return "incircle";
-        case Predicate::incircle_cosine: return "incircle_cosine";
-    }
-    return "?";
-}
-
-template <PredicateKernel K>
-Sign evaluate(const K& k, Predicate p, const Quad& q) {
-    switch (p) {
-        case Predicate::orient2d: return k.orient2d(q.a, q.b, q.c);
-        case Predicate::incircle: return k.incircle(q.a, q.b, q.c, q.d);
-        case Predicate::incircle_cosine: return k.incircle_cosine(q.a, q.b, q.c, q.d);
-    }
-    return Sign::zero;
-}
+std::array<Point2, 4> points_of(const Quad& q) { return {q.a, q.b, q.c, q.d}; }
 
 // ---- the oracle ------------------------------------------------------------------------
 
@@ -73,6 +57,7 @@ int cgal_sign(Predicate p, const Quad& q) {
         case Predicate::incircle_cosine:
             // Under the cosine form's precondition it equals orient2d(a,b,c) * incircle.
             return cgal_orient(q.a, q.b, q.c) * cgal_sign(Predicate::incircle, q);
+        case Predicate::compare_distance: break;
     }
     return 0;
 }
@@ -84,40 +69,14 @@ bool cosine_precondition(const Quad& q) {
 }
 
 // ---- the precision that makes the MPFR kernel exact ------------------------------------
-// Scale the query onto the grid 2^g of its smallest frexp exponent minus 53: every
-// coordinate becomes an integer of magnitude below 2^b, b = 53 + (largest - smallest
-// frexp exponent among nonzero coordinates). A p-bit float holds every integer below 2^p
-// exactly, so if each intermediate of the formula (formulas.hpp) stays below 2^p nothing
-// rounds and the sign is exact:
-//   orient2d: differences < 2^(b+1), products < 2^(2b+2), their difference < 2^(2b+3).
-//   incircle: lifts < 2^(2b+3), 2x2 minors < 2^(2b+3), three products of those summed
-//             < 3 * 2^(4b+6) < 2^(4b+8).
-//   cosine:   dot products and squared lengths < 2^(2b+3), squared dot times product of
-//             two squared lengths < 2^(8b+12); compared, never subtracted.
-// FIELD_NOTES gives 8b+13 for the cosine form, one bit more than our order needs
-// (proofs/bitcounts.md); the column tests the tighter 8b+12.
+// On the grid of its smallest exponent the query's coordinates are integers of b bits;
+// a p-bit float holds every integer below 2^p exactly, so if every intermediate of the
+// formula (formulas.hpp) stays below 2^p nothing rounds and the sign is exact. The counts
+// for our evaluation order (2b+3, 4b+8, 8b+12) are derived in proofs/bitcounts.md.
 unsigned proven_bits(Predicate p, const Quad& q) {
-    const std::array<Point2, 4> points{q.a, q.b, q.c, q.d};
-    const std::size_t count = p == Predicate::orient2d ? 3 : 4;
-    int lo = 0, hi = 0;
-    bool any = false;
-    for (std::size_t i = 0; i < count; ++i) {
-        for (double v : {points[i].x, points[i].y}) {
-            if (v == 0) continue;
-            int e = 0;
-            std::frexp(v, &e);
-            lo = any ? std::min(lo, e) : e;
-            hi = any ? std::max(hi, e) : e;
-            any = true;
-        }
-    }
-    const unsigned b = 53 + static_cast<unsigned>(hi - lo);
-    switch (p) {
-        case Predicate::orient2d: return 2 * b + 3;
-        case Predicate::incircle: return 4 * b + 8;
-        case Predicate::incircle_cosine: return 8 * b + 12;
-    }
-    return 0;
+    const auto points = points_of(q);
+    const int b = testing::grid_bits(std::span(points.data(), point_count(p)));
+    return testing::exact_bits(p, b);
 }
 
 // ---- columns ---------------------------------------------------------------------------
@@ -131,7 +90,8 @@ struct Column {
 template <PredicateKernel K>
 Column column(K k, bool claims_exact) {
     std::string name = k.name();
-    return {name, claims_exact, [k](Predicate p, const Quad& q) { return evaluate(k, p, q); }};
+    return {name, claims_exact,
+            [k](Predicate p, const Quad& q) { return evaluate(k, p, points_of(q)); }};
 }
 
 // The precision of the last column depends on the row, so columns are built per row.
@@ -214,7 +174,7 @@ int main(int argc, char** argv) {
     bool exactness_broken = false;
     const auto& fams = exidel::bench::families();
     for (std::size_t fi = 0; fi < fams.size(); ++fi) {
-        for (Predicate p : all_predicates) {
+        for (Predicate p : table_predicates) {
             std::seed_seq seq{opt.seed, static_cast<std::uint64_t>(fi),
                               static_cast<std::uint64_t>(p)};
             exidel::bench::Rng rng(seq);
@@ -232,7 +192,7 @@ int main(int argc, char** argv) {
                 oracle.push_back(cgal_sign(p, q));
                 proven = std::max(proven, proven_bits(p, q));
             }
-            std::printf("%-16s %-16s %6zu", fams[fi].name.c_str(), name_of(p), queries.size());
+            std::printf("%-16s %-16s %6zu", fams[fi].name.c_str(), std::string(predicate_name(p)).c_str(), queries.size());
             for (const Column& c : columns(proven)) {
                 if (queries.empty()) {
                     std::printf(" %11s", "-");

@@ -22,29 +22,7 @@ std::vector<std::string_view> split_blanks(std::string_view s) {
     return tokens;
 }
 
-std::optional<Predicate> predicate_from_name(std::string_view name) {
-    for (Predicate p : {Predicate::orient2d, Predicate::incircle, Predicate::incircle_cosine,
-                        Predicate::compare_distance}) {
-        if (predicate_name(p) == name) return p;
-    }
-    return std::nullopt;
-}
-
 }  // namespace
-
-std::string_view predicate_name(Predicate p) noexcept {
-    switch (p) {
-        case Predicate::orient2d: return "orient2d";
-        case Predicate::incircle: return "incircle";
-        case Predicate::incircle_cosine: return "incircle_cosine";
-        case Predicate::compare_distance: return "compare_distance";
-    }
-    return "?";
-}
-
-int point_count(Predicate p) noexcept {
-    return p == Predicate::orient2d || p == Predicate::compare_distance ? 3 : 4;
-}
 
 ParsedLine parse_query_line(std::string_view line) {
     ParsedLine out;
@@ -63,7 +41,7 @@ ParsedLine parse_query_line(std::string_view line) {
         return fail("unknown predicate " + quoted(tokens[0]) +
                     " (expected orient2d, incircle, incircle_cosine or compare_distance)");
     }
-    const std::size_t expected = 2 * static_cast<std::size_t>(point_count(*predicate));
+    const std::size_t expected = 2 * point_count(*predicate);
     if (tokens.size() - 1 != expected) {
         return fail(std::string(predicate_name(*predicate)) + " takes " +
                     std::to_string(expected) + " coordinates, got " +

@@ -18,15 +18,10 @@
 
 #include "exidel/io/number.hpp"
 #include "exidel/predicates/kernel.hpp"
+#include "exidel/predicates/predicate.hpp"
 #include "exidel/predicates/types.hpp"
 
 namespace exidel::cli {
-
-enum class Predicate { orient2d, incircle, incircle_cosine, compare_distance };
-
-std::string_view predicate_name(Predicate p) noexcept;
-/// 3 for orient2d and compare_distance, 4 for the in-circle tests.
-int point_count(Predicate p) noexcept;
 
 struct Query {
     Predicate predicate = Predicate::orient2d;
@@ -50,14 +45,7 @@ ParsedLine parse_query_line(std::string_view line);
 /// Evaluates a parsed query with kernel `k`.
 template <PredicateKernel K>
 Sign evaluate(const K& k, const Query& q) {
-    const auto& p = q.points;
-    switch (q.predicate) {
-        case Predicate::orient2d: return k.orient2d(p[0], p[1], p[2]);
-        case Predicate::incircle: return k.incircle(p[0], p[1], p[2], p[3]);
-        case Predicate::incircle_cosine: return k.incircle_cosine(p[0], p[1], p[2], p[3]);
-        case Predicate::compare_distance: return k.compare_distance(p[0], p[1], p[2]);
-    }
-    return Sign::zero;  // unreachable: every enumerator is handled above
+    return exidel::evaluate(k, q.predicate, q.points);
 }
 
 }  // namespace exidel::cli

@@ -217,7 +217,7 @@ research::FailureMapOptions failure_map_options(const Parsed& p) {
         if (p.order) s.order = parse_list(*p.order, "--order", 3);
         if (p.step) s.step = std::int64_t(*p.step);
         s.centered = p.centered;
-        s.description = "custom " + std::string(research::to_string(s.formulation)) + " map, point " +
+        s.description = "custom " + std::string(predicate_name(s.formulation)) + " map, point " +
                         std::to_string(s.pivot) + " moved";
         research::validate(s);  // before any work: bad specs are usage errors
         o.specs.push_back(std::move(s));

@@ -1,8 +1,8 @@
 # exidel_add_library(<name> <sources...>): the library exidel_<name> with alias
 # exidel::<name>, public headers in <dir>/include (installed under include/), C++20, and
 # the floating-point hygiene of every exidel translation unit: -ffp-contract=off (no product
-# and sum fused behind our back: FIELD_NOTES measured Dekker's split and Two-Product break,
-# and generated test inputs change) and -fno-fast-math (which also overrides a parent
+# and sum fused behind our back: Dekker's split and Two-Product break, and generated test
+# inputs change; docs/background.md sections 1 and 2) and -fno-fast-math (which also overrides a parent
 # project's global -ffast-math). PRIVATE: these never reach a consumer's compile lines.
 include_guard(GLOBAL)
 

@@ -1,6 +1,6 @@
 # exidel_warnings(<target>...): the warning set every target of this project compiles
 # with. PRIVATE on purpose: a consumer of exidel chooses its own warnings, so nothing here
-# may reach its compile lines (STYLE.md: no global CMAKE_CXX_FLAGS changes).
+# may reach its compile lines (so no global CMAKE_CXX_FLAGS changes either).
 #
 # The top-level CMakeLists.txt also calls exidel_warnings_everywhere() after every
 # subdirectory is added, so a target someone forgot to mark still gets the flags; calling

@@ -187,7 +187,7 @@ TEST(ExidelBinary, ExactKernelsAgreeOnNearDegenerateFile) {
     }
     // Frexp exponents of the coordinates span at most 6 within a query (0.1 .. 5.3, 0.5 ..
     // 24), so b = 53 + 6 and 8b + 13 = 485 bits make the MPFR
-    // kernel exact on every line (FIELD_NOTES, precision counts).
+    // kernel exact on every line (proofs/bitcounts.md gives 8b + 12; one spare bit).
     for (const char* k : {"adaptive", "exact-cpp", "mpfr:485"}) {
         const RunResult r = run(std::string("predicate --kernel ") + k + " " + path);
         EXPECT_EQ(r.status, 0) << k << ": " << r.err;

@@ -43,7 +43,7 @@ inline bool filter_decides(double value, double errbound, Sign& sign) {
 // (proofs/bounds.md#expansion-range derives max_log per predicate).
 //
 // The exponent is read from the bits rather than with std::ilogb, a library call that
-// measured 6 ns per coordinate, a third of the cost of an exact tie of compare_distance.
+// costs a large share of an exact tie of compare_distance (docs/measurements.md).
 // A subnormal (exponent field 0) is given e = -1023 instead of its true ilogb < -1022:
 // the only uses are e <= max_log, true either way, and g = max(e - 52, -1074) = -1074,
 // equal either way.
@@ -51,8 +51,7 @@ bool expansion_safe(std::initializer_list<double> coordinates, int degree, int m
     int g_min = INT_MAX, e_max = INT_MIN;
     for (double v : coordinates) {
         if (v == 0) continue;
-        const auto biased = static_cast<int>((std::bit_cast<std::uint64_t>(v) >> 52) & 0x7ff);
-        const int e = biased == 0 ? -1023 : biased - 1023;
+        const int e = detail::decode(v).biased_exponent - 1023;
         e_max = std::max(e_max, e);
         g_min = std::min(g_min, std::max(e - 52, -1074));
     }
@@ -151,6 +150,12 @@ inline Sign orient2d_impl(Point2 a, Point2 b, Point2 c, AdaptiveStage* stage) {
 
 // ---- incircle ---------------------------------------------------------------------------
 
+/// The rounded differences a - d, b - d, c - d every stage of incircle starts from:
+/// computed once by the filter and handed down to the slower stages.
+struct IncircleDifferences {
+    double adx, ady, bdx, bdy, cdx, cdy;
+};
+
 /// lift * (p - q) for one row of the incircle determinant: (x^2 + y^2) times the
 /// two-product difference p1 q1 - p2 q2, as an expansion of at most 32 components.
 int incircle_row(double x, double y, double p1, double q1, double p2, double q2, double* out) {
@@ -176,14 +181,14 @@ int incircle_of_rounded_differences(double adx, double ady, double bdx, double b
     return detail::expansion_sum(ablen, abdet, clen, cdet, fin);
 }
 
-[[gnu::noinline]] Sign incircle_adapt(Point2 a, Point2 b, Point2 c, Point2 d, double permanent,
+[[gnu::noinline]] Sign incircle_adapt(Point2 a, Point2 b, Point2 c, Point2 d,
+                                      const IncircleDifferences& v, double permanent,
                                       AdaptiveStage& stage) {
     if (!expansion_safe({a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y}, 4, incircle_max_log)) {
         stage = AdaptiveStage::gmp;
         return GmpExactKernel::incircle(a, b, c, d);
     }
-    const double adx = a.x - d.x, ady = a.y - d.y, bdx = b.x - d.x, bdy = b.y - d.y;
-    const double cdx = c.x - d.x, cdy = c.y - d.y;
+    const auto [adx, ady, bdx, bdy, cdx, cdy] = v;
 
     // Stage B: the determinant of the rounded differences, exactly (Shewchuk's schedule:
     // lengths 4, 8, 16, 32, 64, 96, on the stack).
@@ -234,9 +239,8 @@ int incircle_of_rounded_differences(double adx, double ady, double bdx, double b
 /// Shewchuk's stage A: a bound relative to the permanent, tighter than the semi-static one
 /// near degeneracy. Out of line, so the semi-static fast path keeps few values live.
 [[gnu::noinline]] Sign incircle_stage_a(Point2 a, Point2 b, Point2 c, Point2 d,
-                                        AdaptiveStage& stage) {
-    const double adx = a.x - d.x, ady = a.y - d.y, bdx = b.x - d.x, bdy = b.y - d.y;
-    const double cdx = c.x - d.x, cdy = c.y - d.y;
+                                        const IncircleDifferences& v, AdaptiveStage& stage) {
+    const auto [adx, ady, bdx, bdy, cdx, cdy] = v;
     const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
     const double cdxady = cdx * ady, adxcdy = adx * cdy;
     const double adxbdy = adx * bdy, bdxady = bdx * ady;
@@ -255,12 +259,12 @@ int incircle_of_rounded_differences(double adx, double ady, double bdx, double b
                                                       ((sb + sc) + 1.0));
     stage = AdaptiveStage::filter;
     if (Sign s; filter_decides(det, errbound, s)) return s;
-    return incircle_adapt(a, b, c, d, permanent, stage);
+    return incircle_adapt(a, b, c, d, v, permanent, stage);
 }
 
 inline Sign incircle_impl(Point2 a, Point2 b, Point2 c, Point2 d, AdaptiveStage* stage) {
-    const double adx = a.x - d.x, ady = a.y - d.y, bdx = b.x - d.x, bdy = b.y - d.y;
-    const double cdx = c.x - d.x, cdy = c.y - d.y;
+    const IncircleDifferences v{a.x - d.x, a.y - d.y, b.x - d.x, b.y - d.y, c.x - d.x, c.y - d.y};
+    const auto [adx, ady, bdx, bdy, cdx, cdy] = v;
     // Semi-static filter: one bound from the largest difference (constants.hpp). The
     // expression is stage A's, operation for operation.
     const double m = std::max({std::fabs(adx), std::fabs(ady), std::fabs(bdx), std::fabs(bdy),
@@ -274,7 +278,7 @@ inline Sign incircle_impl(Point2 a, Point2 b, Point2 c, Point2 d, AdaptiveStage*
         if (Sign s; filter_decides(det, eb::icc_static * (m2 * m2), s)) [[likely]]
             return s;
     }
-    return incircle_stage_a(a, b, c, d, *stage);
+    return incircle_stage_a(a, b, c, d, v, *stage);
 }
 
 // ---- incircle_cosine --------------------------------------------------------------------

@@ -2,13 +2,13 @@
 #include "exidel/predicates/exact.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cstdint>
 #include <initializer_list>
 
 #include <boost/multiprecision/cpp_int.hpp>
 #include <boost/multiprecision/gmp.hpp>
 
+#include "binary64.hpp"
 #include "formulas.hpp"
 #include "fp_hygiene.hpp"
 
@@ -27,26 +27,6 @@ struct IntegerOf<ExactBackend::cpp_int> {
     using type = boost::multiprecision::cpp_int;
 };
 
-// A finite double is m * 2^q with m a signed integer of at most 53 bits. Read from the
-// bits rather than computed with frexp, so the answer cannot depend on the caller's
-// floating-point environment (denormals-are-zero would read a subnormal as 0).
-struct Decomposed {
-    std::int64_t mantissa;
-    int shift;
-};
-
-Decomposed decompose(double v) {
-    const auto bits = std::bit_cast<std::uint64_t>(v);
-    const int biased_exponent = static_cast<int>((bits >> 52) & 0x7ff);
-    auto mantissa = static_cast<std::int64_t>(bits & ((std::uint64_t{1} << 52) - 1));
-    int shift = -1074;  // subnormal: no hidden bit
-    if (biased_exponent != 0) {
-        mantissa |= std::int64_t{1} << 52;
-        shift = biased_exponent - 1075;
-    }
-    return {(bits >> 63) != 0 ? -mantissa : mantissa, shift};
-}
-
 // Maps the coordinates of one query to integers on the common grid 2^g, where g is the
 // smallest q among them. All predicates are homogeneous in coordinate differences, so the
 // scale 2^-g changes no sign (proofs/exact-kernel.md).
@@ -56,16 +36,17 @@ public:
     AlignedLift(std::initializer_list<Point2> points) {
         for (const Point2& p : points) {
             for (double v : {p.x, p.y}) {
-                const Decomposed d = decompose(v);
-                if (d.mantissa != 0) grid_ = std::min(grid_, d.shift);
+                // v = m * 2^q, m an integer of at most 53 bits (binary64.hpp).
+                const detail::Binary64 d = detail::decode(v);
+                if (d.significand != 0) grid_ = std::min(grid_, d.exponent);
             }
         }
     }
     Int operator()(double v) const {
-        const Decomposed d = decompose(v);
-        if (d.mantissa == 0) return Int(0);
-        Int r(d.mantissa);
-        r <<= static_cast<unsigned>(d.shift - grid_);
+        const detail::Binary64 d = detail::decode(v);
+        if (d.significand == 0) return Int(0);
+        Int r(d.signed_significand());
+        r <<= static_cast<unsigned>(d.exponent - grid_);
         return r;
     }
 

@@ -27,6 +27,7 @@
 #include <boost/container/small_vector.hpp>
 #include <boost/multiprecision/cpp_int.hpp>
 
+#include "binary64.hpp"
 #include "exidel/predicates/types.hpp"
 #include "fp_hygiene.hpp"
 
@@ -56,7 +57,7 @@ inline double two_diff_tail(double a, double b, double x) {
 }
 
 /// x + y == a * b exactly, x = fl(a * b). The error term is one fused multiply-add,
-/// written explicitly (FIELD_NOTES: Dekker's split breaks when the compiler contracts).
+/// written explicitly (docs/background.md section 1: Dekker's split breaks when the compiler contracts).
 inline void two_product(double a, double b, double& x, double& y) {
     x = a * b;
     y = std::fma(a, b, -x);
@@ -115,13 +116,15 @@ Sign sign_of_largest(const double (&x)[N]) {
 // For the adaptive stages, whose expansion lengths are bounded and known: no allocation,
 // the caller provides the output array (length at most elen + flen, resp. 2 elen).
 
-/// h = e + f (Shewchuk's fast_expansion_sum_zeroelim, merging by magnitude on the fly).
-/// Returns the length of h; h may not alias e or f.
-inline int expansion_sum(int elen, const double* e, int flen, const double* f, double* h) {
+/// h = e + f_sign * f (Shewchuk's fast_expansion_sum_zeroelim, merging by magnitude on
+/// the fly; f_sign is +1 or -1, so the negation is exact). Returns the length of h; h may
+/// not alias e or f.
+inline int expansion_sum(int elen, const double* e, int flen, const double* f, double* h,
+                         double f_sign = 1.0) {
     int i = 0, j = 0, n = 0;
     auto next = [&]() {
         if (j == flen || (i < elen && std::fabs(e[i]) < std::fabs(f[j]))) return e[i++];
-        return f[j++];
+        return f_sign * f[j++];
     };
     if (elen + flen == 0) return 0;
     double q = next();
@@ -163,15 +166,9 @@ struct BitRange {
     int lo, hi;
 };
 inline BitRange bit_range(double v) {
-    const std::uint64_t bits = std::bit_cast<std::uint64_t>(v) & 0x7fff'ffff'ffff'ffffull;
-    const auto field = static_cast<int>(bits >> 52);
-    std::uint64_t m = bits & ((std::uint64_t{1} << 52) - 1);
-    int e = -1074;  // |v| = m 2^e
-    if (field != 0) {
-        m |= std::uint64_t{1} << 52;
-        e = field - 1075;
-    }
-    return {e + std::countr_zero(m), e + 63 - std::countl_zero(m)};
+    const Binary64 d = decode(v);
+    return {d.exponent + std::countr_zero(d.significand),
+            d.exponent + 63 - std::countl_zero(d.significand)};
 }
 
 /// x[0..n) (no zeros) pairwise nonoverlapping: each component's highest bit is below the
@@ -207,34 +204,19 @@ inline bool in_class_w(int n, const double* x) {
 /// The sign of x[0] + ... + x[n-1] (any doubles), by exact integer arithmetic: every
 /// double is m 2^e with |m| < 2^53, so the sum is an integer times 2^(smallest e).
 inline Sign exact_sign_of_sum(int n, const double* x) {
-    auto decompose = [](double v, std::int64_t& m, int& e) {
-        const std::uint64_t bits = std::bit_cast<std::uint64_t>(v);
-        const auto field = static_cast<int>((bits >> 52) & 0x7ff);
-        auto mag = static_cast<std::int64_t>(bits & ((std::uint64_t{1} << 52) - 1));
-        e = -1074;
-        if (field != 0) {
-            mag |= std::int64_t{1} << 52;
-            e = field - 1075;
-        }
-        m = (bits >> 63) ? -mag : mag;
-    };
     int low = 0;
     bool any = false;
     for (int k = 0; k < n; ++k) {
         if (x[k] == 0) continue;
-        std::int64_t m;
-        int e;
-        decompose(x[k], m, e);
+        const int e = decode(x[k]).exponent;
         low = any ? std::min(low, e) : e;
         any = true;
     }
     boost::multiprecision::cpp_int sum = 0;
     for (int k = 0; k < n; ++k) {
         if (x[k] == 0) continue;
-        std::int64_t m;
-        int e;
-        decompose(x[k], m, e);
-        sum += boost::multiprecision::cpp_int(m) << (e - low);
+        const Binary64 d = decode(x[k]);
+        sum += boost::multiprecision::cpp_int(d.signed_significand()) << (d.exponent - low);
     }
     return sum > 0 ? Sign::positive : (sum < 0 ? Sign::negative : Sign::zero);
 }
@@ -275,13 +257,6 @@ public:
 
     /// The sign of the exact value (checked_sign: the structure is not taken on trust).
     Sign sign() const { return checked_sign(static_cast<int>(c_.size()), c_.data()); }
-    /// A floating approximation of the value (the sum, smallest first).
-    double estimate() const {
-        double s = 0;
-        for (double v : c_) s += v;
-        return s;
-    }
-
     friend Expansion operator+(const Expansion& e, const Expansion& f) { return sum(e, f, 1.0); }
     friend Expansion operator-(const Expansion& e, const Expansion& f) {
         return sum(e, f, -1.0);
@@ -305,49 +280,25 @@ public:
     }
 
 private:
-    /// e + f_sign * f (f_sign is +1 or -1, so negation is exact): Shewchuk's fast expansion
-    /// sum with zero elimination, merging the components by magnitude on the fly into one
-    /// pass of Two-Sum.
+    /// e + f_sign * f (f_sign is +1 or -1), by the raw-array expansion_sum above.
     static Expansion sum(const Expansion& e, const Expansion& f, double f_sign) {
+        const int ne = e.size(), nf = f.size();
         Expansion h;
-        const std::size_t ne = e.c_.size(), nf = f.c_.size();
-        if (ne + nf == 0) return h;
-        h.c_.reserve(ne + nf);
-        std::size_t i = 0, j = 0;
-        auto next = [&]() {
-            if (j == nf || (i < ne && std::fabs(e.c_[i]) < std::fabs(f.c_[j]))) return e.c_[i++];
-            return f_sign * f.c_[j++];
-        };
-        double q = next();
-        while (i + j < ne + nf) {
-            double qn, hh;
-            two_sum(q, next(), qn, hh);
-            if (hh != 0) h.c_.push_back(hh);
-            q = qn;
-        }
-        if (q != 0) h.c_.push_back(q);
+        h.c_.resize(static_cast<std::size_t>(ne + nf), boost::container::default_init);
+        h.c_.resize(static_cast<std::size_t>(
+            expansion_sum(ne, e.c_.data(), nf, f.c_.data(), h.c_.data(), f_sign)));
         return h;
     }
 
-    /// Shewchuk's scale_expansion_zeroelim: this * b, exact.
+    /// this * b, exact, by the raw-array expansion_scale above.
     Expansion scaled(double b) const {
         Expansion h;
-        if (c_.empty() || b == 0) return h;
-        h.c_.reserve(2 * c_.size());
-        double q, hh;
-        two_product(c_[0], b, q, hh);
-        if (hh != 0) h.c_.push_back(hh);
-        for (std::size_t i = 1; i < c_.size(); ++i) {
-            double p1, p0, s;
-            two_product(c_[i], b, p1, p0);
-            two_sum(q, p0, s, hh);
-            if (hh != 0) h.c_.push_back(hh);
-            two_sum(p1, s, q, hh);
-            if (hh != 0) h.c_.push_back(hh);
-        }
-        if (q != 0) h.c_.push_back(q);
+        h.c_.resize(2 * c_.size(), boost::container::default_init);
+        h.c_.resize(static_cast<std::size_t>(expansion_scale(size(), c_.data(), b, h.c_.data())));
         return h;
     }
+
+    int size() const { return static_cast<int>(c_.size()); }
 
     /// Shewchuk's compress: the same value in (usually far) fewer components.
     void compress() {

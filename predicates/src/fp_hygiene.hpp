@@ -1,9 +1,9 @@
 // exidel (private): refuse to compile exact code under flags that break it.
 //
 // The exact stages rely on IEEE binary64 with round-to-nearest and on every product and
-// sum being rounded as written (no contraction into FMA, no reassociation). See
-// ../shared FIELD_NOTES: -ffast-math made Shewchuk's incircle wrong on 35% of
-// near-cocircular queries, and contraction broke Dekker's split in orient2d.
+// sum being rounded as written (no contraction into FMA, no reassociation). docs/background.md
+// section 1: -ffast-math made Shewchuk's incircle wrong on 35% of near-cocircular
+// queries, and contraction broke Dekker's split in orient2d.
 #pragma once
 
 #include <cfloat>

@@ -1,5 +1,5 @@
 // Named fixtures of exidel::delaunay::triangulate: input handling, the seed, degenerate
-// inputs with known answers, and the counts FIELD_NOTES predicts.
+// inputs with known answers, and the counts of docs/background.md section 5.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -121,7 +121,7 @@ TEST(DelaunayCocircular, IntegerGridSquares) {
     EXPECT_EQ(r.triangulation.hull.size(), 2u * (6 + 4));
 }
 
-// FIELD_NOTES: inserting the left branch of a parabola in ascending x rebuilds the whole
+// docs/background.md section 5: inserting the left branch of a parabola in ascending x rebuilds the whole
 // triangulation every time, (n-2)(n-3)/2 destroyed triangles in total.
 TEST(DelaunayCounts, AscendingParabolaLeftBranchDestroysQuadraticallyMany) {
     const int n = 60;

@@ -1,7 +1,7 @@
 // exidel hygiene tests: near-degenerate queries, generated in one library compiled with
 // strict floating-point flags (-O2 -ffp-contract=off, no -ffast-math) so that every test
-// executable, whatever its own flags, sees bit-identical inputs (FIELD_NOTES: inputs made
-// by code compiled with contraction on come out different).
+// executable, whatever its own flags, sees bit-identical inputs (docs/background.md section 2:
+// inputs made by code compiled with contraction on come out different).
 #pragma once
 
 #include <string>
@@ -28,7 +28,7 @@ struct QueryFamily {
     std::vector<IncircleQuery> incircle;  // decided with incircle and incircle_cosine
 };
 
-/// Kettner et al.'s three near-collinear configurations (FIELD_NOTES), with p moved over a
+/// Kettner et al.'s three near-collinear configurations (docs/background.md section 4), with p moved over a
 /// grid_size x grid_size grid of ulp steps, each with all three choices of pivot.
 QueryFamily kettner_family(int grid_size);
 

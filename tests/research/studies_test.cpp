@@ -202,7 +202,7 @@ TEST(Precision, EnoughBitsMakeNoErrorAndDoublePrecisionDoes) {
     for (const PrecisionCell& c : s.cells) {
         // Kettner queries have b = 58 (proofs/bitcounts.md): 512 >= 8 b + 12 for every formulation.
         if (c.bits == 512) {
-            EXPECT_EQ(c.wrong, 0u) << to_string(c.formulation);
+            EXPECT_EQ(c.wrong, 0u) << predicate_name(c.formulation);
         }
         if (c.bits == 53) wrong53 += c.wrong;
         EXPECT_EQ(c.total, 500u);

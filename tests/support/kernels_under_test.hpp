@@ -1,5 +1,5 @@
 // exidel tests: the kernels that claim exactness, as one type list for typed tests
-// (STYLE.md item 8: one test body, every kernel).
+// (one test body, every kernel).
 #pragma once
 
 #include <array>
@@ -13,7 +13,7 @@
 
 namespace exidel::test {
 
-/// MpfrKernel at exactly the precision FIELD_NOTES says makes each formula exact for
+/// MpfrKernel at exactly the precision proofs/bitcounts.md says makes each formula exact for
 /// this query: 2b+3 bits for orient2d, 4b+8 for incircle, 8b+12 for incircle_cosine,
 /// with b = 53 + the exponent spread of the query's own coordinates (grid_bits).
 /// Computing b per query, rather than one fixed worst case (8 * (53 + 2097) + 13 =

@@ -25,18 +25,9 @@ std::string kernel_file_name(const Kernel& k) {
     return s;
 }
 
-std::string_view to_string(Formulation f) noexcept {
-    switch (f) {
-        case Formulation::orient2d: return "orient2d";
-        case Formulation::incircle: return "incircle";
-        case Formulation::incircle_cosine: return "incircle_cosine";
-    }
-    return "?";
-}
-
 Formulation formulation_from_name(std::string_view name) {
     for (Formulation f : all_formulations) {
-        if (to_string(f) == name) return f;
+        if (predicate_name(f) == name) return f;
     }
     throw std::invalid_argument("unknown formulation '" + std::string(name) +
                                 "' (expected orient2d|incircle|incircle_cosine)");

@@ -52,7 +52,7 @@ FailureMapSpec circle(Formulation f, int s, std::size_t pivot, std::string name)
     spec.order = {0, 1, 2, 3};
     spec.centered = true;
     const char* letters = "abcd";
-    spec.description = std::string(to_string(f)) + "(a, b, c, d) for four exactly cocircular points " +
+    spec.description = std::string(predicate_name(f)) + "(a, b, c, d) for four exactly cocircular points " +
                        "(radius 5 * 2^-" + std::to_string(s) + " around (2, 2)); " +
                        letters[pivot] + " moved over [-128, 128)^2 ulp steps" +
                        (f == Formulation::incircle ? "; the formula subtracts d"
@@ -108,9 +108,9 @@ FailureMapSpec failure_map_preset(std::string_view name) {
 }
 
 void validate(const FailureMapSpec& s) {
-    const std::size_t n = arity(s.formulation);
+    const std::size_t n = point_count(s.formulation);
     if (s.points.size() != n) {
-        throw std::invalid_argument(std::string(to_string(s.formulation)) + " needs " +
+        throw std::invalid_argument(std::string(predicate_name(s.formulation)) + " needs " +
                                     std::to_string(n) + " points, got " +
                                     std::to_string(s.points.size()));
     }
@@ -156,7 +156,7 @@ FailureMap compute_failure_map(const FailureMapSpec& spec, const Kernel& kernel,
 
     m.signs.resize(W * H);
     m.exact.resize(W * H);
-    const std::size_t n = arity(spec.formulation);
+    const std::size_t n = point_count(spec.formulation);
     for_each_chunk(H, jobs, progress, [&](std::size_t j) {
         std::vector<Point2> pts = spec.points;
         std::array<Point2, 4> args{};
@@ -252,7 +252,7 @@ FailureMapStudy run_failure_map_study(const FailureMapOptions& options, const Ru
             write_png(run.out / row.png, render_failure_map(m));
             pictures.image(spec.name + ", " + m.kernel + ": " + std::to_string(m.wrong) + " wrong",
                            row.png);
-            study.table.rows.push_back({spec.name, m.kernel, std::string(to_string(spec.formulation)),
+            study.table.rows.push_back({spec.name, m.kernel, std::string(predicate_name(spec.formulation)),
                                         std::to_string(row.cells), counts_text(m.counts),
                                         counts_text(m.exact_counts), std::to_string(m.wrong),
                                         format_rate(m.wrong, row.cells)});

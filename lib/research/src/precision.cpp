@@ -34,17 +34,6 @@ std::vector<testing::Family> near_degenerate_families() {
     return v;
 }
 
-/// The bound of proofs/bitcounts.md for our evaluation order (8b + 12 for the cosine
-/// comparison; FIELD_NOTES' 8b + 13 counts a subtraction our order does not form).
-unsigned bound_bits(Formulation f, int b) {
-    switch (f) {
-        case Formulation::orient2d: return testing::orient2d_bits(b);
-        case Formulation::incircle: return testing::incircle_bits(b);
-        case Formulation::incircle_cosine: return testing::at_least_53(8 * b + 12);
-    }
-    return 0;
-}
-
 struct Chunk {
     Formulation formulation;
     testing::Family family;
@@ -113,7 +102,7 @@ PrecisionStudy run_precision_study(const PrecisionOptions& options, const RunOpt
             }
         }
         for (const auto& q : queries) {
-            const std::span<const Point2> args(q.data(), arity(c.formulation));
+            const std::span<const Point2> args(q.data(), point_count(c.formulation));
             const Sign exact = evaluate(GmpExactKernel{}, c.formulation, args);
             for (std::size_t p = 0; p < bits.size(); ++p) {
                 r.wrong[p] += evaluate(kernels[p], c.formulation, args) != exact;
@@ -151,14 +140,14 @@ PrecisionStudy run_precision_study(const PrecisionOptions& options, const RunOpt
     plot.y_label = "wrong-sign rate (all near-degenerate families pooled)";
     plot.log_y = true;
     for (Formulation f : all_formulations) {
-        Series series{std::string(to_string(f)), {}, {}};
+        Series series{std::string(predicate_name(f)), {}, {}};
         std::vector<std::uint64_t> pooled_wrong(bits.size(), 0);
         std::uint64_t pooled_total = 0;
         for (testing::Family fam : families) {
             Cell& cell = cells[{int(f), int(fam)}];
             for (std::size_t p = 0; p < bits.size(); ++p) {
                 study.cells.push_back({f, fam, bits[p], cell.wrong[p], cell.total});
-                rates.rows.push_back({std::string(to_string(f)), std::string(testing::family_name(fam)),
+                rates.rows.push_back({std::string(predicate_name(f)), std::string(testing::family_name(fam)),
                                       std::to_string(bits[p]), std::to_string(cell.wrong[p]),
                                       std::to_string(cell.total), format_rate(cell.wrong[p], cell.total)});
                 pooled_wrong[p] += cell.wrong[p];
@@ -174,12 +163,12 @@ PrecisionStudy run_precision_study(const PrecisionOptions& options, const RunOpt
             std::sort(b.begin(), b.end());
             const int b_median = b.empty() ? 0 : b[b.size() / 2];
             const int b_max = b.empty() ? 0 : b.back();
-            const auto within = std::count_if(b.begin(), b.end(), [&](int v) { return bound_bits(f, v) <= 512; });
+            const auto within = std::count_if(b.begin(), b.end(), [&](int v) { return testing::exact_bits(f, v) <= 512; });
             const auto at53 = std::find(bits.begin(), bits.end(), 53u);
             thresholds.rows.push_back(
-                {std::string(to_string(f)), std::string(testing::family_name(fam)), std::to_string(cell.total),
-                 std::to_string(b_median), std::to_string(b_max), std::to_string(bound_bits(f, b_median)),
-                 std::to_string(bound_bits(f, b_max)),
+                {std::string(predicate_name(f)), std::string(testing::family_name(fam)), std::to_string(cell.total),
+                 std::to_string(b_median), std::to_string(b_max), std::to_string(testing::exact_bits(f, b_median)),
+                 std::to_string(testing::exact_bits(f, b_max)),
                  format_fraction(b.empty() ? 0 : double(within) / double(b.size())), smallest,
                  at53 == bits.end() ? "-" : std::to_string(cell.wrong[std::size_t(at53 - bits.begin())])});
         }
@@ -207,8 +196,8 @@ PrecisionStudy run_precision_study(const PrecisionOptions& options, const RunOpt
     study.report.image("wrong-sign rate vs precision", "precision.svg");
     study.report.paragraph(
         "Smallest precision without errors, measured, beside the bit counts of "
-        "proofs/bitcounts.md for our evaluation order (2b+3, 4b+8, 8b+12; FIELD_NOTES' 8b+13 "
-        "counts one subtraction more) at the median and the largest grid width b of the sampled "
+        "proofs/bitcounts.md for our evaluation order (2b+3, 4b+8, 8b+12; an earlier count of 8b+13 "
+        "included one subtraction more) at the median and the largest grid width b of the sampled "
         "queries (b = 53 + exponent spread). The bound is sufficient, not necessary: the "
         "measured p is usually far below it, and families with subnormal or widely spread "
         "coordinates have b in the thousands. 'queries within 512-bit bound' is the share of "

@@ -102,8 +102,7 @@ StagesStudy run_stages_study(const StagesOptions& options, const RunOptions& run
             std::vector<std::array<Point2, 4>> queries(count);
             // compare_distance(c, p, q) takes three points of the family, like orient2d;
             // rows 0-2 are the Formulation values, so their streams keep their seeds.
-            const bool three_points = c.predicate == std::size_t(Formulation::orient2d) ||
-                                      c.predicate == compare_distance_row;
+            const bool three_points = point_count(stage_predicates[c.predicate]) == 3;
             {
                 const std::lock_guard lock(rapidcheck_mutex());
                 rc::Random random(derive_seed(run.seed, {stages_study_id, std::uint64_t(c.family), 0,
@@ -113,7 +112,7 @@ StagesStudy run_stages_study(const StagesOptions& options, const RunOptions& run
                     if (three_points) {
                         const auto q3 = testing::gen_query3(c.family)(r).value();
                         std::copy(q3.begin(), q3.end(), q.begin());
-                    } else if (c.predicate == std::size_t(Formulation::incircle)) {
+                    } else if (stage_predicates[c.predicate] == Predicate::incircle) {
                         q = testing::gen_query4(c.family)(r).value();
                     } else {
                         q = testing::gen_cosine_query(c.family)(r).value();
@@ -121,12 +120,8 @@ StagesStudy run_stages_study(const StagesOptions& options, const RunOptions& run
                 }
             }
             for (const auto& q : queries) {
-                if (c.predicate == compare_distance_row) {
-                    (void)kernel.compare_distance(q[0], q[1], q[2]);
-                } else {
-                    const auto f = Formulation(c.predicate);
-                    (void)evaluate(kernel, f, std::span(q.data(), arity(f)));
-                }
+                const Predicate p = stage_predicates[c.predicate];
+                (void)evaluate(kernel, p, std::span(q.data(), point_count(p)));
             }
             c.counts[0] = kernel.counts;
         } else {
@@ -169,7 +164,7 @@ StagesStudy run_stages_study(const StagesOptions& options, const RunOptions& run
                 for (std::uint64_t v : per) calls += v;
                 if (calls == 0) continue;  // e.g. incircle_cosine in a determinant triangulation
                 std::vector<std::string> row{std::string(testing::family_name(families[f])), contexts[ctx],
-                                             std::string(stage_predicates[pred]), std::to_string(calls)};
+                                             std::string(predicate_name(stage_predicates[pred])), std::to_string(calls)};
                 for (std::uint64_t v : per) row.push_back(format_fraction(double(v) / double(calls)));
                 study.table.rows.push_back(std::move(row));
             }
@@ -184,7 +179,7 @@ StagesStudy run_stages_study(const StagesOptions& options, const RunOptions& run
             std::uint64_t calls = 0;
             for (std::uint64_t v : per) calls += v;
             if (calls == 0) continue;
-            std::vector<std::string> row{contexts[ctx], std::string(stage_predicates[pred]), std::to_string(calls)};
+            std::vector<std::string> row{contexts[ctx], std::string(predicate_name(stage_predicates[pred])), std::to_string(calls)};
             for (std::uint64_t v : per) row.push_back(format_fraction(double(v) / double(calls)));
             summary.rows.push_back(std::move(row));
         }

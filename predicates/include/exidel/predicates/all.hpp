@@ -6,5 +6,6 @@
 #include "exidel/predicates/floating.hpp"
 #include "exidel/predicates/kernel.hpp"
 #include "exidel/predicates/mpfr.hpp"
+#include "exidel/predicates/predicate.hpp"
 #include "exidel/predicates/registry.hpp"
 #include "exidel/predicates/types.hpp"

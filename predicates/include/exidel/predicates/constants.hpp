@@ -46,8 +46,8 @@ inline constexpr double icc_c = (44.0 + 576.0 * epsilon) * epsilon * epsilon;
 // icc_static * M^4 covers the rounding of the differences (12 ((1-eps)^-4 - 1) M^4) and of
 // the evaluation (80 eps M^4 to first order): 128 eps + O(eps^2) in all
 // (proofs/bounds.md#incircle-semi-static). It costs a max over six magnitudes where the
-// permanent costs a sum of products, and it measured about 1.7x faster than stage A on
-// uniform input (bench/). Used only for M in [icc_static_min, icc_static_max]: above, M^4
+// permanent costs a sum of products, and is faster than stage A on uniform input
+// (docs/measurements.md). Used only for M in [icc_static_min, icc_static_max]: above, M^4
 // could overflow; below, underflow could add errors the bound does not cover.
 inline constexpr double icc_static = 130.0 * epsilon;
 inline constexpr double icc_static_min = 0x1p-240;

@@ -11,10 +11,9 @@ namespace exidel::delaunay {
 /// Below this many points `automatic` runs one radial pass; from it, strips.
 inline constexpr std::size_t automatic_strips_from = std::size_t{1} << 15;
 
-/// Points per strip when Options::strip_points is 0: measured (bench/, README) as the
-/// fastest on uniform input on this project's machines, at every size: a strip's arrays
-/// stay cache-sized, and the merges cost little. (At 10^7 points, strips of n/64 points
-/// took 6.5 s against 5.5 s for these, one thread; 4.0 s against 3.6 s with two.)
+/// Points per strip when Options::strip_points is 0: the fastest on uniform input at
+/// every size measured (docs/measurements.md): a strip's arrays stay cache-sized, and
+/// the merges cost little.
 constexpr std::size_t default_strip_points(std::size_t /*n*/) noexcept {
     return std::size_t{1} << 14;
 }

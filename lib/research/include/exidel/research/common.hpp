@@ -41,25 +41,14 @@ Kernel parse_kernel(std::string_view name);
 /// kernel_name with characters unsafe in file names replaced ("mpfr:64" -> "mpfr64").
 std::string kernel_file_name(const Kernel& k);
 
-enum class Formulation { orient2d, incircle, incircle_cosine };
-inline constexpr Formulation all_formulations[] = {Formulation::orient2d, Formulation::incircle,
-                                                   Formulation::incircle_cosine};
-std::string_view to_string(Formulation f) noexcept;
+/// The formulations the studies compare: the predicates of exidel/predicates/predicate.hpp
+/// whose formulas fail in floating point in different ways (compare_distance, the radial
+/// order's key, is counted by the stages study only).
+using Formulation = Predicate;
+inline constexpr Formulation all_formulations[] = {Predicate::orient2d, Predicate::incircle,
+                                                   Predicate::incircle_cosine};
 /// Throws std::invalid_argument for anything but the three names.
 Formulation formulation_from_name(std::string_view name);
-constexpr std::size_t arity(Formulation f) noexcept { return f == Formulation::orient2d ? 3 : 4; }
-
-/// The formulation's predicate on args (arity(f) points, in argument order).
-template <PredicateKernel K>
-Sign evaluate(const K& k, Formulation f, std::span<const Point2> args) {
-    switch (f) {
-        case Formulation::orient2d: return k.orient2d(args[0], args[1], args[2]);
-        case Formulation::incircle: return k.incircle(args[0], args[1], args[2], args[3]);
-        case Formulation::incircle_cosine:
-            return k.incircle_cosine(args[0], args[1], args[2], args[3]);
-    }
-    return Sign::zero;
-}
 
 // ---------------------------------------------------------------------------------
 // Seeds.

@@ -39,7 +39,7 @@ struct FailureMapSpec {
     std::string name;                 ///< preset name, or "custom"
     std::string description;
     Formulation formulation = Formulation::orient2d;
-    std::vector<Point2> points;       ///< arity(formulation) points
+    std::vector<Point2> points;       ///< point_count(formulation) points
     std::size_t pivot = 0;            ///< index into points of the point that moves
     std::vector<std::size_t> order;   ///< argument i of the predicate is points[order[i]]
     int width = 256, height = 256;
@@ -47,7 +47,7 @@ struct FailureMapSpec {
     bool centered = false;            ///< window [-W/2, W/2) instead of [0, W)
 };
 
-/// The built-in configurations: kettner1..3 (FIELD_NOTES, the paper's p moved, the
+/// The built-in configurations: kettner1..3 (docs/background.md section 4, the paper's p moved, the
 /// formula pivoting on p), kettner1-pivot-q and -r (the same points with q or r first),
 /// and circle/cosine configurations of four exactly cocircular points (a lattice circle
 /// of radius 5 scaled by 2^-s around (1, 1), s = 2, 12, 24), d moved around its place.
@@ -269,12 +269,11 @@ Classification replay_fixture(const std::filesystem::path& file, const Kernel& k
 // =================================================================================
 // stages
 
-/// The predicates whose stages are counted, in the order of StageCounts' rows: the
-/// three formulations (same positions as Formulation) and compare_distance, the radial
-/// insertion order's sort key.
-inline constexpr std::array<std::string_view, 4> stage_predicates{"orient2d", "incircle",
-                                                                  "incircle_cosine", "compare_distance"};
-inline constexpr std::size_t compare_distance_row = 3;
+/// The predicates whose stages are counted, in the order of StageCounts' rows: every
+/// predicate of the list (the three formulations, then compare_distance, the radial
+/// insertion order's sort key).
+inline constexpr auto stage_predicates = all_predicates;
+inline constexpr std::size_t compare_distance_row = std::size_t(Predicate::compare_distance);
 
 /// Counts per predicate (stage_predicates) and AdaptiveStage.
 using StageCounts = std::array<std::array<std::uint64_t, adaptive_stage_count>, stage_predicates.size()>;

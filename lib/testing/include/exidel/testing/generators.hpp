@@ -10,7 +10,7 @@
 // exactly degenerate input, or to the fewest ulps away from one that still fails.
 //
 // Why no plain arithmetic on doubles: a caller compiled with contraction on would fuse
-// a*b+c and generate different points from the same seed (FIELD_NOTES). The helpers in
+// a*b+c and generate different points from the same seed (docs/background.md section 2). The helpers in
 // ulp.hpp are exact or round once by definition, and the only inexact step used here is
 // an explicit std::fma, which rounds once under every compiler flag.
 #pragma once
@@ -237,7 +237,7 @@ inline rc::Gen<std::vector<Point2>> gen_rounded_circle_points(std::size_t n) {
 }
 
 /// The three configurations of Kettner, Mehlhorn, Pion, Schirra and Yap (CGTA 2008;
-/// FIELD_NOTES), as literal doubles.
+/// docs/background.md section 4), as literal doubles.
 inline constexpr std::array<std::array<Point2, 3>, 3> kettner_configurations{{
     {{{0.5, 0.5}, {12, 12}, {24, 24}}},
     {{{0.50000000000002531, 0.5000000000000171},

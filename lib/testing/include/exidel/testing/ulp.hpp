@@ -2,8 +2,8 @@
 //
 // Every helper here is exact or rounds exactly once by definition (std::nextafter,
 // std::ldexp, std::frexp, integer arithmetic), so its result does not depend on whether
-// the caller's translation unit contracts a*b+c into a fused multiply-add (FIELD_NOTES:
-// inputs generated under contraction come out different).
+// the caller's translation unit contracts a*b+c into a fused multiply-add (docs/background.md
+// section 2: inputs generated under contraction come out different).
 #pragma once
 
 #include <climits>
@@ -12,6 +12,7 @@
 #include <limits>
 #include <span>
 
+#include "exidel/predicates/predicate.hpp"
 #include "exidel/predicates/types.hpp"
 
 namespace exidel::testing {
@@ -43,7 +44,7 @@ inline int low_exponent(double v) {
     return e - std::numeric_limits<double>::digits;
 }
 
-/// b of FIELD_NOTES: the number of bits of the largest coordinate of `points` once all
+/// b of proofs/bitcounts.md: the number of bits of the largest coordinate of `points` once all
 /// coordinates are written as integers on the common grid 2^min(q), i.e. 53 + the
 /// spread of the low exponents. 0 when every coordinate is zero.
 inline int grid_bits(std::span<const Point2> points) {
@@ -62,12 +63,22 @@ inline int grid_bits(std::span<const Point2> points) {
 /// Significand bits with which the textbook formulas (predicates/src/formulas.hpp) are
 /// exact for a query of grid width b: differences take b+1 bits, each product doubles and
 /// each sum adds one. proofs/bitcounts.md derives them per intermediate for our evaluation
-/// order; the cosine form needs 8b+12 there (FIELD_NOTES' 8b+13 counts a final
+/// order; the cosine form needs 8b+12 there (an earlier count, 8b+13, included a final
 /// subtraction that our comparison of the two sides does not perform).
 /// Never below 53, so that the inputs themselves are exact.
 constexpr unsigned at_least_53(int bits) { return bits < 53 ? 53u : unsigned(bits); }
 constexpr unsigned orient2d_bits(int b) { return at_least_53(2 * b + 3); }
 constexpr unsigned incircle_bits(int b) { return at_least_53(4 * b + 8); }
 constexpr unsigned incircle_cosine_bits(int b) { return at_least_53(8 * b + 12); }
+/// The count for predicate p (compare_distance has degree 2, like orient2d).
+constexpr unsigned exact_bits(Predicate p, int b) {
+    switch (p) {
+        case Predicate::orient2d:
+        case Predicate::compare_distance: return orient2d_bits(b);
+        case Predicate::incircle: return incircle_bits(b);
+        case Predicate::incircle_cosine: return incircle_cosine_bits(b);
+    }
+    return 0;
+}
 
 }  // namespace exidel::testing

@@ -15,8 +15,8 @@
 namespace exidel::delaunay::detail {
 
 /// The shape rule of `automatic`: whether the sorted points lie on a convex curve that the
-/// radial order walks along, where `radial` beats `strips` (bench/, README: on 10^6 points
-/// of a parabola 0.96x CGAL's time against 2.5x; every strip there is an arc whose radial
+/// radial order walks along, where `radial` beats `strips` by a wide margin
+/// (docs/measurements.md): every strip there is an arc whose radial
 /// sort is all near-ties, and each merge re-triangulates two arcs' fans). Decided on at
 /// most 1024 evenly spaced points: at least half of them on their convex hull, and the
 /// radial order about the centre `radial` would use growing them along that hull as a few

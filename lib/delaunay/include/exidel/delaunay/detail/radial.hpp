@@ -62,8 +62,7 @@ inline Point2 circumcentre_offset(Point2 a, Point2 b, Point2 c) {
 /// Why not the box centre itself: on a sampled convex curve the distance from a point
 /// inside the curve first falls and then rises along it, so the order starts in the
 /// middle and every point added at the end nearer the curve's point of greatest
-/// curvature re-triangulates all earlier ones (quadratic; measured 6700 flips per point
-/// on 20,000 points of a parabola). From the centre of the osculating circle the
+/// curvature re-triangulates all earlier ones (quadratic; docs/measurements.md). From the centre of the osculating circle the
 /// distance is monotone along a convex arc of increasing curvature, and the order walks
 /// the curve from one end, as the paper's order does on the favourable branch.
 inline Point2 radial_centre(std::span<const Point2> points) {

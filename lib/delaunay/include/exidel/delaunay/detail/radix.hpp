@@ -2,7 +2,7 @@
 // triangulation starts with (the lexicographic sort of the input and the radial sort of
 // each strip). Both sort doubles, and a double's order is an order on its bits
 // (order_key below), so a least-significant-digit radix sort does in six linear passes
-// what a comparison sort does in log2(n) ~ 20; measured in bench/ (README, "Triangulation").
+// what a comparison sort does in log2(n) ~ 20 (docs/measurements.md).
 #pragma once
 
 #include <algorithm>

@@ -163,9 +163,8 @@ std::optional<Failure> build_strips(const K& kernel, std::span<const Point2> pts
     // (4,6), ...: a node joins the two halves of an aligned block of 2^k strips. Its
     // lower levels run depth first, one block of `block` strips at a time (build two
     // strips, merge them, build the next two, ...), so that a merge finds the fans it
-    // walks still in L3 rather than evicted by every later strip's build (measured: the
-    // strips-and-merges phase at 10^6 uniform points, one thread, from 475 to 455 ms,
-    // medians of 6 runs); the blocks are the parallel jobs, and the levels above them
+    // walks still in L3 rather than evicted by every later strip's build
+    // (docs/measurements.md); the blocks are the parallel jobs, and the levels above them
     // run level by level. The block size
     // depends on the strip count only, never on `threads`, and failures are reported in
     // one fixed order (the first failing block, then level by level), so the result,
