@@ -10,14 +10,16 @@
 #include <algorithm>
 #include <charconv>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <thread>
+
+#include <nlohmann/json.hpp>
 
 #include "commands.hpp"
 #include "exidel/delaunay/algorithms.hpp"
@@ -167,39 +169,47 @@ std::string_view policy_name(delaunay::InCirclePolicy p) {
     return p == delaunay::InCirclePolicy::cosine ? "cosine" : "determinant";
 }
 
+// One JSON object on one line, keys in a fixed order (nlohmann's ordered_json).
 void print_stats(std::ostream& err, std::size_t points, const delaunay::Result& r,
                  const std::string& kernel, const Options& o, double read_ms,
                  double triangulate_ms, double write_ms) {
     const delaunay::Triangulation& t = r.triangulation;
-    const delaunay::Counters& c = r.counters;
-    std::ostringstream s;
-    s.precision(6);
-    s << std::fixed;
-    s << "{\"points\": " << points << ", \"vertices\": " << points - t.duplicates.size()
-      << ", \"duplicates\": " << t.duplicates.size() << ", \"triangles\": " << t.triangle_count()
-      << ", \"hull_size\": " << t.hull.size()
-      << ", \"collinear\": " << (t.collinear ? "true" : "false") << ", \"kernel\": \"" << kernel
-      << "\", \"incircle\": \"" << policy_name(o.incircle) << "\", \"algorithm\": \""
-      << delaunay::to_string(r.algorithm) << "\", \"strategy\": \""
-      << delaunay::to_string(r.strategy) << "\", \"strips\": " << r.strips
-      << ", \"threads\": " << o.threads
-      << ", \"instrumentation\": \"counters\", \"counters\": {"
-      << "\"seed_orientations\": " << c.seed_orientations
-      << ", \"tangent_orientations\": " << c.tangent_orientations
-      << ", \"incircle_tests\": " << c.incircle_tests << ", \"eroded_edges\": " << c.eroded_edges
-      << ", \"triangles_created\": " << c.triangles_created
-      << ", \"triangles_destroyed\": " << c.triangles_destroyed
-      << ", \"theorem1_checks\": " << c.theorem1_checks
-      << ", \"theorem1_violations\": " << c.theorem1_violations
-      << ", \"visible_search_orientations\": " << c.visible_search_orientations
-      << ", \"merge_orientations\": " << c.merge_orientations
-      << ", \"merge_incircle_tests\": " << c.merge_incircle_tests
-      << ", \"merge_deleted_edges\": " << c.merge_deleted_edges
-      << ", \"merge_cross_edges\": " << c.merge_cross_edges << ", \"flips\": " << c.flips()
-      << "}"
-      << ", \"read_ms\": " << read_ms << ", \"triangulate_ms\": " << triangulate_ms
-      << ", \"write_ms\": " << write_ms << "}\n";
-    err << s.str();
+    // Six decimals, as the hand-written writer printed them.
+    const auto ms = [](double v) { return std::round(v * 1e6) / 1e6; };
+    nlohmann::ordered_json counters;
+    r.counters.for_each([&](std::string_view name, std::uint64_t v) { counters[name] = v; });
+    counters["flips"] = r.counters.flips();
+    const nlohmann::ordered_json stats{
+        {"points", points},
+        {"vertices", points - t.duplicates.size()},
+        {"duplicates", t.duplicates.size()},
+        {"triangles", t.triangle_count()},
+        {"hull_size", t.hull.size()},
+        {"collinear", t.collinear},
+        {"kernel", kernel},
+        {"incircle", policy_name(o.incircle)},
+        {"algorithm", delaunay::to_string(r.algorithm)},
+        {"strategy", delaunay::to_string(r.strategy)},
+        {"strips", r.strips},
+        {"threads", o.threads},
+        {"instrumentation", "counters"},
+        {"counters", counters},
+        {"read_ms", ms(read_ms)},
+        {"triangulate_ms", ms(triangulate_ms)},
+        {"write_ms", ms(write_ms)},
+    };
+    // The layout of the hand-written writer this replaced, which scripts may match:
+    // ", " and ": " between items, all on one line. dump(0) puts each item on its own
+    // line with ": " (a string's own newlines are escaped, so every '\n' is layout).
+    std::string line;
+    for (const char c : stats.dump(0)) {
+        if (c != '\n') {
+            line += c;
+        } else if (!line.empty() && line.back() == ',') {
+            line += ' ';
+        }
+    }
+    err << line << '\n';
 }
 
 // Removes the temporary file unless it was renamed into place.

@@ -37,19 +37,9 @@ std::string_view to_string(Strategy strategy) noexcept {
 }
 
 Counters& Counters::operator+=(const Counters& o) noexcept {
-    seed_orientations += o.seed_orientations;
-    tangent_orientations += o.tangent_orientations;
-    incircle_tests += o.incircle_tests;
-    eroded_edges += o.eroded_edges;
-    triangles_created += o.triangles_created;
-    triangles_destroyed += o.triangles_destroyed;
-    theorem1_checks += o.theorem1_checks;
-    theorem1_violations += o.theorem1_violations;
-    visible_search_orientations += o.visible_search_orientations;
-    merge_orientations += o.merge_orientations;
-    merge_incircle_tests += o.merge_incircle_tests;
-    merge_deleted_edges += o.merge_deleted_edges;
-    merge_cross_edges += o.merge_cross_edges;
+#define EXIDEL_DELAUNAY_COUNTER_ADD(name) name += o.name;
+    EXIDEL_DELAUNAY_COUNTERS(EXIDEL_DELAUNAY_COUNTER_ADD)
+#undef EXIDEL_DELAUNAY_COUNTER_ADD
     return *this;
 }
 

@@ -57,24 +57,41 @@ enum class Instrumentation {
     theorem1,  ///< counters, and check the paper's Theorem 1 exactly at every in-circle test
 };
 
+/// The counters, defined once: X(name) per field, in the order `--stats` prints them.
+/// seed_orientations: orient2d calls looking for the seed; tangent_orientations: in the
+/// tangent walks; eroded_edges = edge flips of the incremental view; theorem1_checks and
+/// theorem1_violations: Theorem 1, at each in-circle test of border edge ab with opposite
+/// vertex c, the new point p and c are strictly on opposite sides of ab (exact
+/// orientation); visible_search_orientations: the radial order's search for a visible
+/// hull edge from the hash; merge_*: the strips' zipper (orientations in the tangent
+/// search and candidate validity; deleted edges: of the two sides, removed by a merge).
+#define EXIDEL_DELAUNAY_COUNTERS(X) \
+    X(seed_orientations)            \
+    X(tangent_orientations)         \
+    X(incircle_tests)               \
+    X(eroded_edges)                 \
+    X(triangles_created)            \
+    X(triangles_destroyed)          \
+    X(theorem1_checks)              \
+    X(theorem1_violations)          \
+    X(visible_search_orientations)  \
+    X(merge_orientations)           \
+    X(merge_incircle_tests)         \
+    X(merge_deleted_edges)          \
+    X(merge_cross_edges)
+
 struct Counters {
-    std::uint64_t seed_orientations = 0;     ///< orient2d calls looking for the seed
-    std::uint64_t tangent_orientations = 0;  ///< orient2d calls in the tangent walks
-    std::uint64_t incircle_tests = 0;
-    std::uint64_t eroded_edges = 0;  ///< = edge flips of the incremental view
-    std::uint64_t triangles_created = 0;
-    std::uint64_t triangles_destroyed = 0;
-    /// Theorem 1: at each in-circle test of border edge ab with opposite vertex c, the
-    /// new point p and c are strictly on opposite sides of ab (exact orientation).
-    std::uint64_t theorem1_checks = 0;
-    std::uint64_t theorem1_violations = 0;
-    /// Radial order: orient2d calls spent finding a visible hull edge from the hash.
-    std::uint64_t visible_search_orientations = 0;
-    /// Strips: the zipper's work.
-    std::uint64_t merge_orientations = 0;   ///< tangent search and candidate validity
-    std::uint64_t merge_incircle_tests = 0;
-    std::uint64_t merge_deleted_edges = 0;  ///< edges of the two sides removed by a merge
-    std::uint64_t merge_cross_edges = 0;
+#define EXIDEL_DELAUNAY_COUNTER_FIELD(name) std::uint64_t name = 0;
+    EXIDEL_DELAUNAY_COUNTERS(EXIDEL_DELAUNAY_COUNTER_FIELD)
+#undef EXIDEL_DELAUNAY_COUNTER_FIELD
+
+    /// Calls f(name, value) for every counter, in the order of the list.
+    template <class F>
+    void for_each(F&& f) const {
+#define EXIDEL_DELAUNAY_COUNTER_VISIT(name) f(std::string_view(#name), name);
+        EXIDEL_DELAUNAY_COUNTERS(EXIDEL_DELAUNAY_COUNTER_VISIT)
+#undef EXIDEL_DELAUNAY_COUNTER_VISIT
+    }
 
     /// Edge flips in the incremental view plus edges deleted by merges: the work that
     /// depends on the insertion order.

@@ -24,6 +24,7 @@
 #include <variant>
 #include <vector>
 
+#include "exidel/delaunay/parallel.hpp"
 #include "exidel/predicates/all.hpp"
 
 namespace exidel::research {
@@ -109,30 +110,10 @@ private:
 /// body is rethrown here after every thread has stopped.
 template <class Body>
 void for_each_chunk(std::size_t chunks, unsigned jobs, Progress* progress, Body&& body) {
-    std::atomic<std::size_t> next{0};
-    std::exception_ptr error;
-    std::mutex error_mutex;
-    auto worker = [&] {
-        for (;;) {
-            const std::size_t i = next.fetch_add(1);
-            if (i >= chunks) return;
-            try {
-                body(i);
-            } catch (...) {
-                const std::lock_guard lock(error_mutex);
-                if (!error) error = std::current_exception();
-                next.store(chunks);  // stop handing out work
-                return;
-            }
-            if (progress) progress->advance();
-        }
-    };
-    const std::size_t threads = std::min<std::size_t>(jobs < 1 ? 1 : jobs, chunks);
-    std::vector<std::thread> pool;
-    for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(worker);
-    worker();
-    for (std::thread& t : pool) t.join();
-    if (error) std::rethrow_exception(error);
+    parallel_for(chunks, jobs, [&](std::size_t i) {
+        body(i);
+        if (progress) progress->advance();
+    });
 }
 
 // ---------------------------------------------------------------------------------

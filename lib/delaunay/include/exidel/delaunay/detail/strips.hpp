@@ -10,49 +10,19 @@
 #pragma once
 
 #include <algorithm>
-#include <atomic>
 #include <bit>
 #include <cstdint>
-#include <exception>
-#include <functional>
 #include <optional>
 #include <span>
-#include <thread>
 #include <vector>
 
 #include "exidel/delaunay/detail/builder.hpp"
 #include "exidel/delaunay/detail/merge.hpp"
 #include "exidel/delaunay/detail/radial.hpp"
+#include "exidel/delaunay/parallel.hpp"
 #include "exidel/delaunay/result.hpp"
 
 namespace exidel::delaunay::detail {
-
-/// Runs job(0) ... job(count - 1) on `threads` threads (the caller's included).
-inline void parallel_for(std::size_t count, unsigned threads,
-                         const std::function<void(std::size_t)>& job) {
-    const std::size_t workers = std::min<std::size_t>(std::max(threads, 1u), count);
-    if (workers <= 1) {
-        for (std::size_t j = 0; j < count; ++j) job(j);
-        return;
-    }
-    std::atomic<std::size_t> next{0};
-    std::vector<std::exception_ptr> errors(workers);
-    auto work = [&](std::size_t w) {
-        try {
-            for (std::size_t j; (j = next.fetch_add(1)) < count;) job(j);
-        } catch (...) {
-            errors[w] = std::current_exception();
-            next = count;  // stop handing out jobs
-        }
-    };
-    std::vector<std::thread> pool;
-    for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(work, w);
-    work(0);
-    for (auto& t : pool) t.join();
-    for (auto& e : errors) {
-        if (e) std::rethrow_exception(e);
-    }
-}
 
 /// Cut positions: strips [cuts[s], cuts[s+1]) of at least `target` points, each extended
 /// until its points are not all collinear (by the kernel's orient2d); a collinear tail
