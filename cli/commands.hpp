@@ -1,9 +1,9 @@
 // exidel CLI (internal): the subcommands and their shared conventions.
 //
 // To add a subcommand: write `int NAME_command(std::span<const std::string_view> args)` in
-// its own NAME.cpp (args are the words after the subcommand's name; it prints its own
-// --help), declare it here, add one row to the table in main.cpp and the file to
-// cli/CMakeLists.txt.
+// its own NAME.cpp (args are the words after the subcommand's name; it declares its
+// options on a CommandLine of options.hpp and has its own --help text), declare it here,
+// add one row to the table in main.cpp and the file to cli/CMakeLists.txt.
 #pragma once
 
 #include <iosfwd>

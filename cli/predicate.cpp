@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "options.hpp"
 #include "query.hpp"
 
 namespace exidel::cli {
@@ -61,32 +62,6 @@ Kernels:
 
 std::string predicate_help() { return std::string(predicate_help_head) + kernel_help(); }
 
-int usage_error(const std::string& message) {
-    std::cerr << "exidel predicate: " << message << "\n\n" << predicate_help();
-    return exit_usage;
-}
-
-enum class OptionMatch { no, matched, missing_value };
-
-// Matches args[i] against "SHORT VALUE", "LONG VALUE" or "LONG=VALUE"; on a match stores
-// the value and leaves i on the last word consumed.
-OptionMatch match_option(std::span<const std::string_view> args, std::size_t& i,
-                         std::string_view short_name, std::string_view long_name,
-                         std::string& value) {
-    const std::string_view arg = args[i];
-    if (arg == short_name || arg == long_name) {
-        if (i + 1 == args.size()) return OptionMatch::missing_value;
-        value = std::string(args[++i]);
-        return OptionMatch::matched;
-    }
-    if (arg.size() > long_name.size() && arg.starts_with(long_name) &&
-        arg[long_name.size()] == '=') {
-        value = std::string(arg.substr(long_name.size() + 1));
-        return OptionMatch::matched;
-    }
-    return OptionMatch::no;
-}
-
 }  // namespace
 
 int run_predicate_queries(std::istream& in, std::ostream& out, std::ostream& err,
@@ -120,40 +95,22 @@ int run_predicate_queries(std::istream& in, std::ostream& out, std::ostream& err
 }
 
 int predicate_command(std::span<const std::string_view> args) {
+    CommandLine cli("predicate", predicate_help());
     std::string kernel_name = "adaptive";
     std::optional<std::string> input;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string_view arg = args[i];
-        if (arg == "-h" || arg == "--help") {
-            std::cout << predicate_help();
-            return exit_ok;
-        }
-        std::string value;
-        const OptionMatch kernel_match = match_option(args, i, "-k", "--kernel", value);
-        if (kernel_match == OptionMatch::missing_value) {
-            return usage_error(std::string(arg) + " needs a value");
-        }
-        if (kernel_match == OptionMatch::matched) {
-            kernel_name = value;
-            continue;
-        }
-        const OptionMatch input_match = match_option(args, i, "-i", "--input", value);
-        if (input_match == OptionMatch::missing_value) {
-            return usage_error(std::string(arg) + " needs a value");
-        }
-        if (input_match == OptionMatch::no) {
-            if (arg.starts_with("-") && arg != "-") {
-                return usage_error("unknown option '" + std::string(arg) + "'");
-            }
-            value = std::string(arg);  // the positional FILE
-        }
-        if (input) return usage_error("more than one input file given");
-        input = value;
+    std::vector<std::string> files;  // the positional FILE, counted with -i
+    cli.app.add_option("-k,--kernel", kernel_name);
+    const CLI::Option* input_option = cli.app.add_option("-i,--input", input);
+    cli.app.add_option("FILE", files);
+    if (const std::optional<int> status = cli.parse(args)) return *status;
+    if (input_option->count() + files.size() > 1) {
+        return cli.usage_error("more than one input file given");
     }
+    if (!files.empty()) input = files.front();
 
     std::string error;
     const std::optional<AnyKernel> kernel = parse_kernel(kernel_name, error);
-    if (!kernel) return usage_error(error);
+    if (!kernel) return cli.usage_error(error);
 
     if (!input || *input == "-") {
         return run_predicate_queries(std::cin, std::cout, std::cerr, *kernel);

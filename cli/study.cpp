@@ -5,6 +5,7 @@
 #include <iostream>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include "exidel/delaunay/algorithms.hpp"
 #include "exidel/io/number.hpp"
 #include "exidel/research/studies.hpp"
+#include "options.hpp"
 
 namespace exidel::cli {
 
@@ -94,11 +96,6 @@ std::string study_help() {
     return std::string(study_help_head) + delaunay::algorithm_help() + "\nKernels:\n" + kernel_help();
 }
 
-int usage_error(const std::string& message) {
-    std::cerr << "exidel study: " << message << "\n(see exidel study --help)\n";
-    return exit_usage;
-}
-
 std::vector<std::string> split(std::string_view s, char sep) {
     std::vector<std::string> out;
     while (!s.empty()) {
@@ -160,47 +157,48 @@ struct Parsed {
     bool centered = false, list_presets = false;
 };
 
-Parsed parse(std::span<const std::string_view> args) {
-    Parsed p;
-    p.study = std::string(args[0]);
-    for (std::size_t i = 1; i < args.size(); ++i) {
-        const std::string_view a = args[i];
-        const auto value = [&]() -> std::string {
-            if (i + 1 >= args.size()) throw std::invalid_argument(std::string(a) + " needs a value");
-            return std::string(args[++i]);
-        };
-        if (a == "--out" || a == "-o") p.run.out = value(), p.out_given = true;
-        else if (a == "--seed") p.run.seed = parse_unsigned(value(), "--seed", UINT64_MAX);
-        else if (a == "--jobs" || a == "-j") {
-            p.run.jobs = unsigned(parse_unsigned(value(), "--jobs", 256));
-            if (p.run.jobs == 0) throw std::invalid_argument("--jobs must be at least 1");
-        } else if (a == "--quick") p.run.quick = true;
-        else if (a == "--no-progress") p.run.progress = false;
-        else if (a == "--preset") p.presets = value();
-        else if (a == "--kernel" || a == "--kernels" || a == "-k") p.kernels = value();
-        else if (a == "--predicate") p.predicate = value();
-        else if (a == "--points") p.points = value();
-        else if (a == "--move") p.move = value();
-        else if (a == "--order") p.order = value();
-        else if (a == "--algorithm" || a == "--algorithms" || a == "-a") p.algorithms = value();
-        else if (a == "--families" || a == "--family") p.families = value();
-        else if (a == "--bits") p.bits = value();
-        else if (a == "--sizes") p.sizes = value();
-        else if (a == "-i" || a == "--input") p.input = value();
-        else if (a == "--incircle") p.incircle = value();
-        else if (a == "--width") p.width = parse_unsigned(value(), "--width", 4096);
-        else if (a == "--height") p.height = parse_unsigned(value(), "--height", 4096);
-        else if (a == "--step") p.step = parse_unsigned(value(), "--step", std::uint64_t{1} << 40);
-        else if (a == "--samples") p.samples = parse_unsigned(value(), "--samples", 100'000'000);
-        else if (a == "--seeds") p.seeds = parse_unsigned(value(), "--seeds", 1'000'000);
-        else if (a == "--size") p.size = parse_unsigned(value(), "--size", 1'000'000);
-        else if (a == "--shrink") p.shrink = parse_unsigned(value(), "--shrink", 1000);
-        else if (a == "--centered") p.centered = true;
-        else if (a == "--list-presets") p.list_presets = true;
-        else throw std::invalid_argument("unknown option '" + std::string(a) + "'");
-    }
-    if (!p.out_given) p.run.out = p.study == "all" ? "exidel-study" : "exidel-study/" + p.study;
-    return p;
+// Declares the options of every study; they fill `p` as given.
+void add_options(CLI::App& app, Parsed& p) {
+    const auto number = [&app](const std::string& name, std::optional<std::uint64_t>& target,
+                               std::uint64_t max) {
+        app.add_option_function<std::string>(name, [name, &target, max](const std::string& v) {
+            target = parse_unsigned(v, name, max);
+        });
+    };
+    app.add_option_function<std::string>("-o,--out", [&p](const std::string& v) {
+        p.run.out = v;
+        p.out_given = true;
+    });
+    app.add_option_function<std::string>("--seed", [&p](const std::string& v) {
+        p.run.seed = parse_unsigned(v, "--seed", UINT64_MAX);
+    });
+    app.add_option_function<std::string>("-j,--jobs", [&p](const std::string& v) {
+        p.run.jobs = unsigned(parse_unsigned(v, "--jobs", 256));
+        if (p.run.jobs == 0) throw std::invalid_argument("--jobs must be at least 1");
+    });
+    app.add_flag("--quick", p.run.quick);
+    app.add_flag_callback("--no-progress", [&p] { p.run.progress = false; });
+    app.add_option("--preset", p.presets);
+    app.add_option("-k,--kernel,--kernels", p.kernels);
+    app.add_option("--predicate", p.predicate);
+    app.add_option("--points", p.points);
+    app.add_option("--move", p.move);
+    app.add_option("--order", p.order);
+    app.add_option("-a,--algorithm,--algorithms", p.algorithms);
+    app.add_option("--families,--family", p.families);
+    app.add_option("--bits", p.bits);
+    app.add_option("--sizes", p.sizes);
+    app.add_option("-i,--input", p.input);
+    app.add_option("--incircle", p.incircle);
+    number("--width", p.width, 4096);
+    number("--height", p.height, 4096);
+    number("--step", p.step, std::uint64_t{1} << 40);
+    number("--samples", p.samples, 100'000'000);
+    number("--seeds", p.seeds, 1'000'000);
+    number("--size", p.size, 1'000'000);
+    number("--shrink", p.shrink, 1000);
+    app.add_flag("--centered", p.centered);
+    app.add_flag("--list-presets", p.list_presets);
 }
 
 research::FailureMapOptions failure_map_options(const Parsed& p) {
@@ -251,12 +249,12 @@ int study_command(std::span<const std::string_view> args) {
         (args.empty() ? std::cerr : std::cout) << study_help();
         return args.empty() ? exit_usage : exit_ok;
     }
+    CommandLine cli("study", study_help(), false);
     Parsed p;
-    try {
-        p = parse(args);
-    } catch (const std::invalid_argument& e) {
-        return usage_error(e.what());
-    }
+    p.study = std::string(args[0]);
+    add_options(cli.app, p);
+    if (const std::optional<int> status = cli.parse(args.subspan(1))) return *status;
+    if (!p.out_given) p.run.out = p.study == "all" ? "exidel-study" : "exidel-study/" + p.study;
     p.run.log = &std::cout;
     const auto start = std::chrono::steady_clock::now();
     const auto seconds = [&] {
@@ -301,20 +299,20 @@ int study_command(std::span<const std::string_view> args) {
             run_all_studies(p.run);
             std::printf("\nall studies done in %.1f s; report: %s\n", seconds(), (p.run.out / "report.md").c_str());
         } else if (p.study == "replay") {
-            if (!p.input || !p.kernels) return usage_error("replay needs -i FILE and --kernel K");
+            if (!p.input || !p.kernels) return cli.usage_error("replay needs -i FILE and --kernel K");
             const Kernel k = research::parse_kernel(*p.kernels);
             const auto policy = parse_policy(p.incircle.value_or("determinant"));
             const std::vector<delaunay::Strategy> orders = parse_orders(p.order.value_or("lexicographic"));
-            if (orders.size() != 1) return usage_error("replay runs one --order: lexicographic, radial or strips");
+            if (orders.size() != 1) return cli.usage_error("replay runs one --order: lexicographic, radial or strips");
             const std::vector<delaunay::Algorithm> algorithms = parse_algorithms(p.algorithms.value_or("external"));
-            if (algorithms.size() != 1) return usage_error("replay runs one --algorithm");
+            if (algorithms.size() != 1) return cli.usage_error("replay runs one --algorithm");
             const Classification c = replay_fixture(*p.input, k, policy, Method(algorithms.front(), orders.front()));
             std::cout << to_string(c.outcome) << (c.detail.empty() ? "" : " (" + c.detail + ")") << '\n';
         } else {
-            return usage_error("unknown study '" + p.study + "'");
+            return cli.usage_error("unknown study '" + p.study + "'");
         }
     } catch (const std::invalid_argument& e) {
-        return usage_error(e.what());
+        return cli.usage_error(e.what());
     } catch (const std::exception& e) {
         std::cerr << "exidel study: " << e.what() << '\n';
         return exit_failure;

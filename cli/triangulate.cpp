@@ -16,8 +16,10 @@
 #include <fstream>
 #include <iostream>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -26,6 +28,7 @@
 #include "exidel/delaunay/triangulate.hpp"
 #include "exidel/io/points.hpp"
 #include "exidel/io/triangulation.hpp"
+#include "options.hpp"
 
 namespace exidel::cli {
 
@@ -117,11 +120,6 @@ std::string triangulate_help() {
            kernel_help();
 }
 
-int usage_error(const std::string& message) {
-    std::cerr << "exidel triangulate: " << message << "\n\n" << triangulate_help();
-    return exit_usage;
-}
-
 struct Options {
     std::optional<std::string> input;
     std::optional<std::string> output;
@@ -136,27 +134,27 @@ struct Options {
     bool stats = false;
 };
 
-// Matches args[i] against "SHORT VALUE", "LONG VALUE" or "LONG=VALUE" (short_name may be
-// empty); on a match stores the value and leaves i on the last word consumed. Returns
-// false without a match; sets `missing` when the value is absent.
-bool match_option(std::span<const std::string_view> args, std::size_t& i,
-                  std::string_view short_name, std::string_view long_name, std::string& value,
-                  bool& missing) {
-    const std::string_view arg = args[i];
-    if ((!short_name.empty() && arg == short_name) || arg == long_name) {
-        if (i + 1 == args.size()) {
-            missing = true;
-            return true;
+// Adds an option whose value `parse` turns into `target`; a value it rejects (returns
+// nothing for) is a usage error "--NAME takes EXPECTED, got 'VALUE'".
+template <class T, class Parse>
+void add_parsed(CLI::App& app, const std::string& names, const std::string& expected, T& target,
+                Parse parse) {
+    const std::string name = names.substr(names.rfind(',') + 1);
+    app.add_option_function<std::string>(names, [=, &target](const std::string& value) {
+        const auto parsed = parse(value);
+        if (!parsed) {
+            throw std::invalid_argument(name + " takes " + expected + ", got '" + value + "'");
         }
-        value = std::string(args[++i]);
-        return true;
-    }
-    if (arg.size() > long_name.size() && arg.starts_with(long_name) &&
-        arg[long_name.size()] == '=') {
-        value = std::string(arg.substr(long_name.size() + 1));
-        return true;
-    }
-    return false;
+        target = static_cast<T>(*parsed);
+    });
+}
+
+// A whole number from 1 to `limit`.
+std::optional<std::size_t> whole_number(const std::string& text, std::size_t limit) {
+    std::size_t n = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
+    if (ec != std::errc{} || end != text.data() + text.size() || n == 0 || n > limit) return {};
+    return n;
 }
 
 using Clock = std::chrono::steady_clock;
@@ -255,10 +253,10 @@ bool write_atomically(const std::string& path, Write write, std::string& error) 
     return true;
 }
 
-int run(const Options& o) {
+int run(const Options& o, const CommandLine& cli) {
     std::string error;
     const std::optional<AnyKernel> kernel = parse_kernel(o.kernel, error);
-    if (!kernel) return usage_error(error);
+    if (!kernel) return cli.usage_error(error);
     const bool from_stdin = !o.input || *o.input == "-";
     const bool to_stdout = !o.output || *o.output == "-";
     const io::PointFormat input_format =
@@ -346,94 +344,56 @@ int run(const Options& o) {
 }  // namespace
 
 int triangulate_command(std::span<const std::string_view> args) {
+    using delaunay::InCirclePolicy, delaunay::Strategy;
+    CommandLine cli("triangulate", triangulate_help());
+    CLI::App& app = cli.app;
     Options o;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string_view arg = args[i];
-        if (arg == "-h" || arg == "--help") {
-            std::cout << triangulate_help();
-            return exit_ok;
+    std::vector<std::string> files;  // the positional FILE, counted with -i
+    const CLI::Option* input = app.add_option("-i,--input", o.input);
+    app.add_option("FILE", files);
+    const CLI::Option* output = app.add_option("-o,--output", o.output);
+    app.add_option("-k,--kernel", o.kernel);
+    app.add_option_function<std::string>("-a,--algorithm", [&](const std::string& name) {
+        const std::optional<delaunay::Algorithm> a = delaunay::algorithm_from_name(name);
+        if (!a) {
+            throw std::invalid_argument("unknown algorithm '" + name + "' (expected " +
+                                        delaunay::algorithm_spellings() + ")");
         }
-        if (arg == "--stats") {
-            o.stats = true;
-            continue;
-        }
-        std::string value;
-        bool missing = false;
-        const auto option = [&](std::string_view short_name, std::string_view long_name) {
-            return match_option(args, i, short_name, long_name, value, missing);
-        };
-        if (option("-i", "--input")) {
-            if (!missing && o.input) return usage_error("more than one input file given");
-            o.input = value;
-        } else if (option("-o", "--output")) {
-            if (!missing && o.output) return usage_error("more than one output file given");
-            o.output = value;
-        } else if (option("-k", "--kernel")) {
-            o.kernel = value;
-        } else if (option("-a", "--algorithm")) {
-            if (const auto a = delaunay::algorithm_from_name(value)) {
-                o.algorithm = *a;
-            } else if (!missing) {
-                return usage_error("unknown algorithm '" + value + "' (expected " +
-                                   delaunay::algorithm_spellings() + ")");
-            }
-        } else if (option("", "--incircle")) {
-            if (value == "determinant") {
-                o.incircle = delaunay::InCirclePolicy::determinant;
-            } else if (value == "cosine") {
-                o.incircle = delaunay::InCirclePolicy::cosine;
-            } else if (!missing) {
-                return usage_error("--incircle takes determinant or cosine, got '" + value + "'");
-            }
-        } else if (option("", "--order")) {
-            if (value == "auto") {
-                o.strategy = delaunay::Strategy::automatic;
-            } else if (value == "lexicographic") {
-                o.strategy = delaunay::Strategy::lexicographic;
-            } else if (value == "radial") {
-                o.strategy = delaunay::Strategy::radial;
-            } else if (value == "strips") {
-                o.strategy = delaunay::Strategy::strips;
-            } else if (!missing) {
-                return usage_error("--order takes auto, lexicographic, radial or strips, got '" +
-                                   value + "'");
-            }
-        } else if (option("", "--threads") || option("", "--strip-points")) {
-            const bool threads = arg.starts_with("--threads");
-            std::size_t parsed = 0;
-            const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), parsed);
-            const std::size_t limit = threads ? 1024 : delaunay::detail::max_points;
-            if (!missing && (ec != std::errc{} || end != value.data() + value.size() ||
-                             parsed == 0 || parsed > limit)) {
-                return usage_error(std::string(threads ? "--threads" : "--strip-points") +
-                                   " takes a whole number from 1 to " + std::to_string(limit) +
-                                   ", got '" + value + "'");
-            }
-            if (threads) {
-                o.threads = static_cast<unsigned>(parsed);
-            } else {
-                o.strip_points = parsed;
-            }
-        } else if (option("-f", "--format")) {
-            o.format = io::triangulation_format_from_name(value);
-            if (!o.format && !missing) {
-                return usage_error("--format takes json, ele, off or svg, got '" + value + "'");
-            }
-        } else if (option("", "--input-format")) {
-            o.input_format = io::point_format_from_name(value);
-            if (!o.input_format && !missing) {
-                return usage_error("--input-format takes xy, json, node or f64, got '" + value +
-                                   "'");
-            }
-        } else if (arg.starts_with("-") && arg != "-") {
-            return usage_error("unknown option '" + std::string(arg) + "'");
-        } else {
-            if (o.input) return usage_error("more than one input file given");
-            o.input = std::string(arg);  // the positional FILE
-        }
-        if (missing) return usage_error(std::string(arg) + " needs a value");
+        o.algorithm = *a;
+    });
+    add_parsed(app, "--incircle", "determinant or cosine", o.incircle,
+               [](const std::string& v) -> std::optional<InCirclePolicy> {
+                   if (v == "determinant") return InCirclePolicy::determinant;
+                   if (v == "cosine") return InCirclePolicy::cosine;
+                   return {};
+               });
+    add_parsed(app, "--order", "auto, lexicographic, radial or strips", o.strategy,
+               [](const std::string& v) -> std::optional<Strategy> {
+                   if (v == "auto") return Strategy::automatic;
+                   for (const Strategy s :
+                        {Strategy::lexicographic, Strategy::radial, Strategy::strips}) {
+                       if (v == delaunay::to_string(s)) return s;
+                   }
+                   return {};
+               });
+    add_parsed(app, "--threads", "a whole number from 1 to 1024", o.threads,
+               [](const std::string& v) { return whole_number(v, 1024); });
+    add_parsed(app, "--strip-points",
+               "a whole number from 1 to " + std::to_string(delaunay::detail::max_points),
+               o.strip_points,
+               [](const std::string& v) { return whole_number(v, delaunay::detail::max_points); });
+    add_parsed(app, "-f,--format", "json, ele, off or svg", o.format,
+               io::triangulation_format_from_name);
+    add_parsed(app, "--input-format", "xy, json, node or f64", o.input_format,
+               io::point_format_from_name);
+    app.add_flag("--stats", o.stats);
+    if (const std::optional<int> status = cli.parse(args)) return *status;
+    if (input->count() + files.size() > 1) {
+        return cli.usage_error("more than one input file given");
     }
-    return run(o);
+    if (output->count() > 1) return cli.usage_error("more than one output file given");
+    if (!files.empty()) o.input = files.front();
+    return run(o, cli);
 }
 
 }  // namespace exidel::cli

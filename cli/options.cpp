@@ -1,0 +1,49 @@
+#include "options.hpp"
+
+#include <iostream>
+#include <stdexcept>
+#include <vector>
+
+#include "commands.hpp"
+
+namespace exidel::cli {
+
+CommandLine::CommandLine(std::string command, std::string help, bool help_on_error)
+    : app("exidel " + command), command_(std::move(command)), help_(std::move(help)),
+      help_on_error_(help_on_error) {
+    // Flags take no value (--stats=1 is an error), options keep their last value.
+    app.option_defaults()
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast)
+        ->disable_flag_override();
+    // Unknown options are collected and reported in parse(), in the words the user typed.
+    app.allow_extras();
+}
+
+std::optional<int> CommandLine::parse(std::span<const std::string_view> args) {
+    std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11's order
+    try {
+        app.parse(reversed);
+    } catch (const CLI::CallForHelp&) {
+        std::cout << help_;
+        return exit_ok;
+    } catch (const CLI::ParseError& e) {
+        return usage_error(e.what());
+    } catch (const std::invalid_argument& e) {
+        return usage_error(e.what());
+    }
+    const std::vector<std::string> unknown = app.remaining();
+    if (!unknown.empty()) return usage_error("unknown option '" + unknown.front() + "'");
+    return std::nullopt;
+}
+
+int CommandLine::usage_error(const std::string& message) const {
+    std::cerr << "exidel " << command_ << ": " << message << '\n';
+    if (help_on_error_) {
+        std::cerr << '\n' << help_;
+    } else {
+        std::cerr << "(see exidel " << command_ << " --help)\n";
+    }
+    return exit_usage;
+}
+
+}  // namespace exidel::cli
