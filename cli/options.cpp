@@ -26,6 +26,15 @@ std::optional<int> CommandLine::parse(std::span<const std::string_view> args) {
     } catch (const CLI::CallForHelp&) {
         std::cout << help_;
         return exit_ok;
+    } catch (const CLI::ArgumentMismatch& e) {
+        // CLI11 says "--input: 1 required TEXT missing"; the commands have always said
+        // "--input needs a value".
+        const std::string what = e.what();
+        const std::size_t colon = what.find(':');
+        if (colon != std::string::npos && what.ends_with(" missing")) {
+            return usage_error(what.substr(0, colon) + " needs a value");
+        }
+        return usage_error(what);
     } catch (const CLI::ParseError& e) {
         return usage_error(e.what());
     } catch (const std::invalid_argument& e) {

@@ -178,25 +178,32 @@ void add_options(CLI::App& app, Parsed& p) {
     });
     app.add_flag("--quick", p.run.quick);
     app.add_flag_callback("--no-progress", [&p] { p.run.progress = false; });
-    app.add_option("--preset", p.presets);
-    app.add_option("-k,--kernel,--kernels", p.kernels);
-    app.add_option("--predicate", p.predicate);
-    app.add_option("--points", p.points);
-    app.add_option("--move", p.move);
-    app.add_option("--order", p.order);
-    app.add_option("-a,--algorithm,--algorithms", p.algorithms);
-    app.add_option("--families,--family", p.families);
-    app.add_option("--bits", p.bits);
-    app.add_option("--sizes", p.sizes);
-    app.add_option("-i,--input", p.input);
-    app.add_option("--incircle", p.incircle);
-    number("--width", p.width, 4096);
-    number("--height", p.height, 4096);
-    number("--step", p.step, std::uint64_t{1} << 40);
-    number("--samples", p.samples, 100'000'000);
-    number("--seeds", p.seeds, 1'000'000);
-    number("--size", p.size, 1'000'000);
-    number("--shrink", p.shrink, 1000);
+    // Text options, passed on as given (each study validates its own).
+    for (auto [names, target] : {std::pair{"--preset", &p.presets},
+                                 {"-k,--kernel,--kernels", &p.kernels},
+                                 {"--predicate", &p.predicate},
+                                 {"--points", &p.points},
+                                 {"--move", &p.move},
+                                 {"--order", &p.order},
+                                 {"-a,--algorithm,--algorithms", &p.algorithms},
+                                 {"--families,--family", &p.families},
+                                 {"--bits", &p.bits},
+                                 {"--sizes", &p.sizes},
+                                 {"-i,--input", &p.input},
+                                 {"--incircle", &p.incircle}}) {
+        app.add_option(names, *target);
+    }
+    // Whole-number options and their largest values.
+    for (auto [name, target, max] :
+         {std::tuple{"--width", &p.width, std::uint64_t{4096}},
+          {"--height", &p.height, std::uint64_t{4096}},
+          {"--step", &p.step, std::uint64_t{1} << 40},
+          {"--samples", &p.samples, std::uint64_t{100'000'000}},
+          {"--seeds", &p.seeds, std::uint64_t{1'000'000}},
+          {"--size", &p.size, std::uint64_t{1'000'000}},
+          {"--shrink", &p.shrink, std::uint64_t{1000}}}) {
+        number(name, *target, max);
+    }
     app.add_flag("--centered", p.centered);
     app.add_flag("--list-presets", p.list_presets);
 }

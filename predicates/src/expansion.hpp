@@ -63,23 +63,20 @@ inline void two_product(double a, double b, double& x, double& y) {
     y = std::fma(a, b, -x);
 }
 
-/// (a1 + a0) - (b1 + b0) as a four-component expansion, exact (Shewchuk's Two_Two_Diff).
-/// x[0] is the smallest component; zeros are not eliminated.
-inline void two_two_diff(double a1, double a0, double b1, double b0, double x[4]) {
-    double i, j, k;
-    two_diff(a0, b0, i, x[0]);
-    two_sum(a1, i, j, k);
-    two_diff(k, b1, i, x[1]);
-    two_sum(j, i, x[3], x[2]);
-}
-
 /// (a1 + a0) + (b1 + b0) as a four-component expansion, exact (Two_Two_Sum).
+/// x[0] is the smallest component; zeros are not eliminated.
 inline void two_two_sum(double a1, double a0, double b1, double b0, double x[4]) {
     double i, j, k;
     two_sum(a0, b0, i, x[0]);
     two_sum(a1, i, j, k);
     two_sum(k, b1, i, x[1]);
     two_sum(j, i, x[3], x[2]);
+}
+
+/// (a1 + a0) - (b1 + b0), exact (Shewchuk's Two_Two_Diff): the sum with b negated, which
+/// is exact, and Two-Sum of a and -b gives the same rounded value and error as Two-Diff.
+inline void two_two_diff(double a1, double a0, double b1, double b0, double x[4]) {
+    two_two_sum(a1, a0, -b1, -b0, x);
 }
 
 /// a + b for a four-component expansion a (a[0] smallest) and a double b: five
