@@ -4,10 +4,8 @@
 #include "exidel/predicates/adaptive.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <climits>
 #include <cmath>
-#include <cstdint>
 #include <initializer_list>
 #include <limits>
 

@@ -2,7 +2,6 @@
 #include "exidel/predicates/exact.hpp"
 
 #include <algorithm>
-#include <cstdint>
 #include <initializer_list>
 
 #include <boost/multiprecision/cpp_int.hpp>
