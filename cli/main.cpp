@@ -26,6 +26,8 @@ constexpr std::array commands{
             &exidel::cli::predicate_command},
     Command{"triangulate", "Delaunay triangulation of points read from a file or stdin",
             &exidel::cli::triangulate_command},
+    Command{"certify", "is a triangulation (json, .ele) the Delaunay triangulation of points?",
+            &exidel::cli::certify_command},
     Command{"study", "failure maps, precision sweeps, triangulation outcomes, adaptive stages",
             &exidel::cli::study_command},
 };

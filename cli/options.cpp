@@ -48,7 +48,10 @@ std::optional<int> CommandLine::parse(std::span<const std::string_view> args) {
 int CommandLine::usage_error(const std::string& message) const {
     std::cerr << "exidel " << command_ << ": " << message << '\n';
     if (help_on_error_) {
-        std::cerr << '\n' << help_;
+        // The synopsis (the help's first paragraph), not the whole help: the reason stays
+        // the first thing one reads, not 70 lines above the prompt.
+        std::cerr << '\n' << help_.substr(0, help_.find("\n\n") + 1)
+                  << "(see exidel " << command_ << " --help)\n";
     } else {
         std::cerr << "(see exidel " << command_ << " --help)\n";
     }

@@ -2,8 +2,9 @@
 // declares its options on a CLI11 app; CommandLine adds the conventions of every
 // subcommand:
 //   - -h/--help prints the subcommand's own help text on standard output (status 0);
-//   - a usage error prints "exidel CMD: MESSAGE" and then, after a blank line, the help
-//     text (or a pointer to it) on standard error, with exit status 2. CLI11's errors,
+//   - a usage error prints "exidel CMD: MESSAGE" and then, after a blank line, the
+//     synopsis (the help text's first paragraph) and a pointer to --help on standard
+//     error, with exit status 2. CLI11's errors,
 //     unknown options and values that an option's callback rejects by throwing
 //     std::invalid_argument are all usage errors;
 //   - an option given twice keeps its last value (a command counts what must not repeat).
@@ -21,7 +22,7 @@ namespace exidel::cli {
 class CommandLine {
 public:
     /// `command` is the subcommand's name, `help` its --help text. With `help_on_error`
-    /// false a usage error ends with "(see exidel CMD --help)" instead of the help text.
+    /// false a usage error ends with "(see exidel CMD --help)" alone, without the synopsis.
     CommandLine(std::string command, std::string help, bool help_on_error = true);
 
     /// Parses `args` (the words after the subcommand's name) into the options declared on

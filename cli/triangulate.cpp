@@ -1,9 +1,10 @@
 // exidel CLI: `exidel triangulate`, points in, Delaunay triangulation out.
 //
-// Data flows one way: read the whole input (lib/io) -> triangulate (lib/delaunay, the one
-// timed call) -> write to a temporary file renamed into place (or stdout). Nothing is
-// written to the output until the triangulation exists, so bad input or a failed run
-// leaves no output file behind.
+// Data flows one way: create the output's temporary file (so an unwritable directory
+// fails at once) -> read the whole input (lib/io) -> triangulate (lib/delaunay, the one
+// timed call) -> optionally certify -> write into the temporary file, renamed into place
+// on success (or stdout). Nothing reaches the output's name until everything succeeded,
+// so bad input, a failed run or an interrupt (output.hpp) leaves no output file behind.
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -25,10 +26,14 @@
 
 #include "commands.hpp"
 #include "exidel/delaunay/algorithms.hpp"
+#include "exidel/delaunay/certify.hpp"
+#include "exidel/delaunay/external.hpp"
 #include "exidel/delaunay/triangulate.hpp"
 #include "exidel/io/points.hpp"
 #include "exidel/io/triangulation.hpp"
 #include "options.hpp"
+#include "output.hpp"
+#include "progress.hpp"
 
 namespace exidel::cli {
 
@@ -37,9 +42,9 @@ namespace {
 constexpr std::string_view triangulate_help_head =
     R"(usage: exidel triangulate [-i FILE] [-o FILE] [--kernel NAME] [--algorithm NAME]
                           [--incircle determinant|cosine] [--format json|ele|off|svg]
-                          [--input-format xy|json|node|f64] [--stats]
+                          [--input-format xy|json|node|f64] [--columns X,Y]
                           [--order auto|lexicographic|radial|strips] [--threads N]
-                          [--strip-points N]
+                          [--strip-points N] [--certify] [--stats] [--quiet] [FILE]
 
 Computes the Delaunay triangulation of a set of points, by default with the external
 incremental algorithm (Cai 2025): each point is added outside the hull of the previous
@@ -49,15 +54,19 @@ ones, so no point location is needed. Its order of insertion (--order):
   radial         by exact distance from a centre (ties by x then y)
   strips         vertical strips of --strip-points points, each radial, merged by the
                  Guibas-Stolfi zipper, on --threads threads
-  auto           (default) radial below 32768 points, strips from there
+  auto           (default) radial below 32768 points and on points along a convex
+                 curve (a sampled hull test: parabolas, ellipses, not circles),
+                 strips otherwise
 Every order gives a Delaunay triangulation with an exact kernel, and the same one when
 no four points are cocircular; the thread count never changes the output.
 
-Input (-i FILE, or standard input when no file or '-' is given). The format is
---input-format, else the file's extension (.json json, .node node, .f64 f64),
+Input (-i FILE or FILE, or standard input when no file or '-' is given). The format
+is --input-format, else the file's extension (.json json, .node node, .f64 f64),
 else xy:
   xy    one point per line, "x y" or "x,y" (.txt .xy .csv); '#' starts a comment;
-        the first line may be a header of two names ("x,y"), which is skipped
+        the first line may be a header of names ("x,y"), which is skipped; fields
+        may be quoted ("x","y"); a UTF-8 byte order mark is skipped. Wider CSV:
+        --columns X,Y picks the two fields by number (from 1) or header name
   json  [[x, y], [x, y], ...]
   node  Triangle's .node: "n 2 attributes markers", then "index x y [...]" lines
         (0- or 1-based); attributes and markers are checked and ignored
@@ -67,20 +76,24 @@ rounded to the nearest double. NaN and infinity are errors; duplicates are kept
 out of the triangulation and listed. An empty input is 0 points.
 
 Output (-o FILE, or standard output). The format is --format, else the extension of
--o (.json .ele .off .svg), else json. Indices are 0-based input indices.
+-o (.json .ele .off .svg; another extension is an error), else json. Indices are
+input indices, 0-based (ele: counted like the input .node, from 0 or 1).
   json  {"triangles": [...], "halfedges": [...], "hull": [...], "duplicates": [...]}
         delaunator's arrays: triangles counter-clockwise, halfedges -1 on the
         boundary, hull counter-clockwise from the lexicographically smallest point
         (all distinct points in order when they are collinear)
-  ele   Triangle's .ele: "ntriangles 3 0", then "t v0 v1 v2", 0-based
+  ele   Triangle's .ele: "ntriangles 3 0", then "t v0 v1 v2"; -o FILE.ele also
+        writes the points as FILE.node beside it (Triangle's pair, same numbering)
+        unless FILE.node is the input itself
   off   OFF with z = 0 (every input point is a vertex, duplicates included)
-  svg   a picture: triangles, hull in red, points; y up
+  svg   a picture: triangles, hull in red, points; y up (opens at 10^6 points)
 
 Options:
   -i, --input FILE        read points from FILE ('-' for standard input)
   -o, --output FILE       write the triangulation to FILE ('-' for standard output);
                           written to a temporary file in the same directory and
-                          renamed on success, so a failed run leaves no FILE
+                          renamed on success, so a failed or interrupted run
+                          (Ctrl-C, SIGTERM) leaves no FILE and no temporary
   -k, --kernel NAME       one of the kernels listed at the end (default: adaptive).
                           adaptive, exact and exact-cpp give the Delaunay
                           triangulation of every finite input; the others may give a
@@ -96,19 +109,33 @@ Options:
                           grow until their points are not all on one line
   -f, --format FORMAT     json|ele|off|svg
       --input-format FMT  xy|json|node|f64
-      --stats             print one JSON object on standard error: sizes, kernel,
-                          "algorithm", "strategy" (the order that ran), "strips",
-                          "threads",
-                          the algorithm's counters and "triangulate_ms" (the time of
-                          the triangulation alone; reading and writing are in
-                          "read_ms" and "write_ms"). Counters are collected only with
-                          --stats (otherwise the run is not instrumented)
+      --columns X,Y       xy input: the fields holding x and y, by number from 1
+                          ("3,4") or by header name ("lon,lat")
+      --certify           check the result with exact predicates before writing it
+                          (exidel certify's checks); a finding is an error: exit
+                          status 1, findings on standard error, no output written
+      --stats             print one JSON object on standard error, also when the
+                          triangulation fails: sizes, kernel, "algorithm",
+                          "strategy" (the order that ran), "strips", "threads" (the
+                          threads that worked: 1 unless strips ran), the algorithm's
+                          counters, "failure" (null or its kind and message) and the
+                          times "read_ms", "triangulate_ms" (the triangulation
+                          alone), "certify_ms", "write_ms" and "total_ms" (from
+                          start to end, including the temporary file and the
+                          rename). Counters are collected only with --stats
+                          (otherwise the run is not instrumented)
+  -q, --quiet             no progress line and no notes on standard error
   -h, --help              show this help
 
+Progress: on a terminal, runs longer than a second show their step on standard
+error. Notes: input that is all on one line, or has fewer than three distinct
+points, has no triangles; a one-line note on standard error says so.
+
 Errors: malformed input stops with "exidel: line N: <reason>" (f64: "byte offset N")
-and exit status 1; a triangulation that an inexact kernel made inconsistent stops
-with "exidel: triangulation failed: <reason>" and exit status 1. No output is
-written in either case.
+and exit status 1; a file that cannot be read says why ("No such file or
+directory"); a triangulation that an inexact kernel made inconsistent stops with
+"exidel: triangulation failed: <where>: <what>" and exit status 1. No output is
+written in any of these cases.
 
 Exit status: 0 success, 1 bad input, failed triangulation or I/O error, 2 bad options.
 
@@ -131,7 +158,10 @@ struct Options {
     std::size_t strip_points = 0;
     std::optional<io::TriangulationFormat> format;
     std::optional<io::PointFormat> input_format;
+    std::optional<io::Columns> columns;
+    bool certify = false;
     bool stats = false;
+    bool quiet = false;
 };
 
 // Adds an option whose value `parse` turns into `target`; a value it rejects (returns
@@ -167,19 +197,46 @@ std::string_view policy_name(delaunay::InCirclePolicy p) {
     return p == delaunay::InCirclePolicy::cosine ? "cosine" : "determinant";
 }
 
+// What each failure means, completing the algorithm's message (which says where).
+std::string_view failure_meaning(delaunay::FailureKind kind) {
+    using delaunay::FailureKind;
+    switch (kind) {
+        case FailureKind::non_finite_input: return "a coordinate is NaN or infinite";
+        case FailureKind::too_many_points:
+            return "more points than 32-bit half-edge indices can address";
+        case FailureKind::unknown_algorithm: return "no such algorithm";
+        case FailureKind::result_inconsistent:
+            return "the finished triangulation does not close up";
+        default: return "the kernel's signs contradict each other";
+    }
+}
+
+// The time spent in each step, in milliseconds.
+struct Times {
+    double read = 0, triangulate = 0, certify = 0, write = 0, total = 0;
+};
+
 // One JSON object on one line, keys in a fixed order (nlohmann's ordered_json).
 void print_stats(std::ostream& err, std::size_t points, const delaunay::Result& r,
-                 const std::string& kernel, const Options& o, double read_ms,
-                 double triangulate_ms, double write_ms) {
+                 const std::string& kernel, const Options& o, const Times& times) {
     const delaunay::Triangulation& t = r.triangulation;
     // Six decimals, as the hand-written writer printed them.
     const auto ms = [](double v) { return std::round(v * 1e6) / 1e6; };
     nlohmann::ordered_json counters;
     r.counters.for_each([&](std::string_view name, std::uint64_t v) { counters[name] = v; });
     counters["flips"] = r.counters.flips();
+    nlohmann::ordered_json failure;  // null when the run succeeded
+    if (r.failure) {
+        failure = {{"kind", delaunay::to_string(r.failure->kind)},
+                   {"message", r.failure->message}};
+    }
+    // Only the strips strategy runs on several threads, one strip or merge per thread.
+    const std::size_t threads =
+        r.strategy == delaunay::Strategy::strips ? std::min<std::size_t>(o.threads, r.strips) : 1;
+    const bool ok = r.ok();
     const nlohmann::ordered_json stats{
         {"points", points},
-        {"vertices", points - t.duplicates.size()},
+        {"vertices", ok ? points - t.duplicates.size() : 0},
         {"duplicates", t.duplicates.size()},
         {"triangles", t.triangle_count()},
         {"hull_size", t.hull.size()},
@@ -189,12 +246,15 @@ void print_stats(std::ostream& err, std::size_t points, const delaunay::Result& 
         {"algorithm", delaunay::to_string(r.algorithm)},
         {"strategy", delaunay::to_string(r.strategy)},
         {"strips", r.strips},
-        {"threads", o.threads},
+        {"threads", threads},
         {"instrumentation", "counters"},
         {"counters", counters},
-        {"read_ms", ms(read_ms)},
-        {"triangulate_ms", ms(triangulate_ms)},
-        {"write_ms", ms(write_ms)},
+        {"failure", failure},
+        {"read_ms", ms(times.read)},
+        {"triangulate_ms", ms(times.triangulate)},
+        {"certify_ms", ms(times.certify)},
+        {"write_ms", ms(times.write)},
+        {"total_ms", ms(times.total)},
     };
     // The layout of the hand-written writer this replaced, which scripts may match:
     // ", " and ": " between items, all on one line. dump(0) puts each item on its own
@@ -210,50 +270,35 @@ void print_stats(std::ostream& err, std::size_t points, const delaunay::Result& 
     err << line << '\n';
 }
 
-// Removes the temporary file unless it was renamed into place.
-struct TempFile {
-    std::string path;
-    bool keep = false;
-    ~TempFile() {
-        if (!path.empty() && !keep) std::remove(path.c_str());
-    }
-};
+// Are `a` and `b` the same existing file?
+bool same_file(const std::string& a, const std::string& b) {
+    struct stat sa {}, sb {};
+    return ::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0 && sa.st_dev == sb.st_dev &&
+           sa.st_ino == sb.st_ino;
+}
 
-// Writes through `write` into a new file next to `path` and renames it over `path` when
-// everything succeeded. On failure returns false with `error` set and leaves `path`
-// untouched (the previous file, if any, survives).
+// Writes through `write(std::ostream&)` into `file`'s temporary; throws on I/O errors.
 template <class Write>
-bool write_atomically(const std::string& path, Write write, std::string& error) {
-    TempFile tmp{path + ".tmp.XXXXXX"};
-    const int fd = ::mkstemp(tmp.path.data());
-    if (fd < 0) {
-        tmp.path.clear();
-        error = "cannot create a temporary file next to '" + path + "'";
-        return false;
+void write_into(const PendingFile& file, Write write) {
+    std::ofstream out = file.open();
+    if (out) write(out);
+    out.close();
+    if (!out) throw std::runtime_error("error while writing '" + file.path() + "'");
+}
+
+// Prints the certifier's findings on `err`, one per line.
+void print_findings(std::ostream& err, const delaunay::Certificate& c) {
+    for (const delaunay::Finding& f : c.findings) {
+        err << "exidel: certificate: " << delaunay::to_string(f.kind) << ": " << f.message << '\n';
     }
-    // mkstemp creates the file 0600; give the result the permissions a plain open would.
-    const mode_t mask = ::umask(0);
-    ::umask(mask);
-    ::fchmod(fd, 0666 & ~mask);
-    ::close(fd);
-    {
-        std::ofstream out(tmp.path, std::ios::binary | std::ios::trunc);
-        if (out) write(out);
-        out.close();
-        if (!out) {
-            error = "error while writing '" + path + "'";
-            return false;
-        }
+    if (c.total_findings > c.findings.size()) {
+        err << "exidel: certificate: ... and " << c.total_findings - c.findings.size()
+            << " more findings\n";
     }
-    if (std::rename(tmp.path.c_str(), path.c_str()) != 0) {
-        error = "cannot rename the temporary file to '" + path + "'";
-        return false;
-    }
-    tmp.keep = true;
-    return true;
 }
 
 int run(const Options& o, const CommandLine& cli) {
+    const Clock::time_point run_start = Clock::now();
     std::string error;
     const std::optional<AnyKernel> kernel = parse_kernel(o.kernel, error);
     if (!kernel) return cli.usage_error(error);
@@ -262,45 +307,74 @@ int run(const Options& o, const CommandLine& cli) {
     const io::PointFormat input_format =
         o.input_format ? *o.input_format
                        : (from_stdin ? io::PointFormat::xy : io::point_format_from_path(*o.input));
-    const io::TriangulationFormat format =
-        o.format ? *o.format
-                 : (to_stdout ? io::TriangulationFormat::json
-                              : io::triangulation_format_from_path(*o.output)
-                                    .value_or(io::TriangulationFormat::json));
-
-    // Read.
-    const Clock::time_point read_start = Clock::now();
-    std::vector<Point2> points;
-    try {
-        if (from_stdin) {
-            points = io::read_points(std::cin, input_format);
-        } else {
-            std::ifstream file(*o.input, std::ios::binary);
-            if (!file) {
-                std::cerr << "exidel: cannot open '" << *o.input << "'\n";
-                return exit_failure;
+    if (o.columns && input_format != io::PointFormat::xy) {
+        return cli.usage_error("--columns applies to xy input, not to " +
+                               std::string(io::to_string(input_format)));
+    }
+    io::TriangulationFormat format = io::TriangulationFormat::json;
+    if (o.format) {
+        format = *o.format;
+    } else if (!to_stdout) {
+        const std::string& out = *o.output;
+        const std::size_t dot = out.rfind('.'), slash = out.rfind('/');
+        const bool has_extension = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+        if (has_extension) {
+            const std::optional<io::TriangulationFormat> f = io::triangulation_format_from_path(out);
+            if (!f) {
+                return cli.usage_error("cannot tell the output format from '" + out +
+                                       "' (extensions: .json .ele .off .svg); give --format");
             }
-            points = io::read_points(file, input_format);
+            format = *f;
         }
-    } catch (const io::ReadError& e) {
-        std::cerr << "exidel: " << e.what() << '\n';
-        return exit_failure;
+    }
+
+    // The output files exist (as temporaries) from here on, removed again on any failure.
+    std::optional<PendingFile> output, node_output;
+    try {
+        if (!to_stdout) output.emplace(*o.output);
+        if (!to_stdout && format == io::TriangulationFormat::ele) {
+            const std::string& out = *o.output;
+            const std::string node = (out.ends_with(".ele") ? out.substr(0, out.size() - 4) : out) + ".node";
+            if (from_stdin || !same_file(node, *o.input)) node_output.emplace(node);
+        }
     } catch (const std::runtime_error& e) {
         std::cerr << "exidel: " << e.what() << '\n';
         return exit_failure;
     }
-    const double read_ms = ms_since(read_start);
+    Progress progress(!o.quiet);
+    Times times;
+
+    // Read.
+    progress.phase(from_stdin ? "reading standard input" : "reading '" + *o.input + "'");
+    const Clock::time_point read_start = Clock::now();
+    io::PointFile input;
+    try {
+        const io::ReadOptions read_options{o.columns};
+        if (from_stdin) {
+            input = io::read_point_file(std::cin, input_format, read_options);
+        } else {
+            input = io::parse_point_file(io::read_file(*o.input), input_format, read_options);
+        }
+    } catch (const std::runtime_error& e) {  // io::ReadError included
+        progress.stop();
+        std::cerr << "exidel: " << e.what() << '\n';
+        return exit_failure;
+    }
+    const std::vector<Point2>& points = input.points;
+    times.read = ms_since(read_start);
 
     // Triangulate: the only timed step. Counters only when asked for, so a plain run is
     // the uninstrumented algorithm.
+    progress.phase("triangulating " + std::to_string(points.size()) + " points");
     delaunay::Options options{o.incircle, o.strategy, o.threads, o.strip_points};
     options.algorithm = o.algorithm;
     delaunay::Result result;
     std::string kernel_name;
-    double triangulate_ms = 0;
+    bool exact_kernel = false;
     std::visit(
         [&](const auto& k) {
             kernel_name = k.name();
+            exact_kernel = std::decay_t<decltype(k)>::is_exact;
             const Clock::time_point start = Clock::now();
             if (o.stats) {
                 result = delaunay::triangulate<delaunay::Instrumentation::counters>(
@@ -309,36 +383,83 @@ int run(const Options& o, const CommandLine& cli) {
                 result = delaunay::triangulate<delaunay::Instrumentation::off>(
                     std::span<const Point2>(points), k, options);
             }
-            triangulate_ms = ms_since(start);
+            times.triangulate = ms_since(start);
         },
         *kernel);
+    const auto finish = [&](int status) {
+        progress.stop();
+        times.total = ms_since(run_start);
+        if (o.stats) print_stats(std::cerr, points.size(), result, kernel_name, o, times);
+        return status;
+    };
     if (!result.ok()) {
-        std::cerr << "exidel: triangulation failed: " << result.failure->message << " ("
-                  << delaunay::to_string(result.failure->kind) << ")\n";
-        return exit_failure;
+        progress.stop();
+        const delaunay::Failure& f = *result.failure;
+        std::cerr << "exidel: triangulation failed: " << f.message << ": "
+                  << failure_meaning(f.kind) << " (" << delaunay::to_string(f.kind) << ").";
+        if (!exact_kernel) {
+            std::cerr << " The " << kernel_name << " kernel is not exact; an exact kernel "
+                      << "(adaptive, the default) triangulates every finite input.";
+        }
+        std::cerr << '\n';
+        return finish(exit_failure);
+    }
+    const delaunay::Triangulation& tri = result.triangulation;
+
+    if (o.certify) {
+        progress.phase("certifying " + std::to_string(tri.triangle_count()) + " triangles");
+        const Clock::time_point start = Clock::now();
+        const delaunay::Certificate certificate = delaunay::certify(points, tri);
+        times.certify = ms_since(start);
+        if (!certificate.ok()) {
+            progress.stop();
+            std::cerr << "exidel: the result is not the Delaunay triangulation of the input ("
+                      << certificate.total_findings << " findings; nothing written):\n";
+            print_findings(std::cerr, certificate);
+            return finish(exit_failure);
+        }
     }
 
     // Write.
+    progress.phase("writing");
     const Clock::time_point write_start = Clock::now();
+    const io::WriteOptions write_options{input.index_base};
     const auto write = [&](std::ostream& out) {
-        io::write_triangulation(out, points, result.triangulation, format);
+        io::write_triangulation(out, points, tri, format, write_options);
     };
-    if (to_stdout) {
-        write(std::cout);
-        std::cout.flush();
-        if (!std::cout) {
-            std::cerr << "exidel: error while writing the output\n";
-            return exit_failure;
+    try {
+        if (!output) {
+            write(std::cout);
+            std::cout.flush();
+            if (!std::cout) throw std::runtime_error("error while writing the output");
+        } else {
+            write_into(*output, write);
+            if (node_output) {
+                write_into(*node_output, [&](std::ostream& out) {
+                    io::write_points(out, points, io::PointFormat::node, input.index_base);
+                });
+            }
+            output->commit();
+            if (node_output) node_output->commit();
         }
-    } else if (!write_atomically(*o.output, write, error)) {
-        std::cerr << "exidel: " << error << '\n';
-        return exit_failure;
+    } catch (const std::runtime_error& e) {
+        progress.stop();
+        std::cerr << "exidel: " << e.what() << '\n';
+        return finish(exit_failure);
     }
-    if (o.stats) {
-        print_stats(std::cerr, points.size(), result, kernel_name, o, read_ms, triangulate_ms,
-                    ms_since(write_start));
+    times.write = ms_since(write_start);
+    progress.stop();
+    if (!o.quiet && tri.collinear) {
+        const std::size_t distinct = points.size() - tri.duplicates.size();
+        std::cerr << "exidel: note: no triangles: "
+                  << (distinct < 3 ? "fewer than three distinct points ("
+                                   : "the distinct points are all on one line (")
+                  << distinct << "); the hull lists them in order\n";
     }
-    return exit_ok;
+    if (!o.quiet && o.certify) {
+        std::cerr << "exidel: certified: the Delaunay triangulation of the input (exact checks)\n";
+    }
+    return finish(exit_ok);
 }
 
 }  // namespace
@@ -386,7 +507,14 @@ int triangulate_command(std::span<const std::string_view> args) {
                io::triangulation_format_from_name);
     add_parsed(app, "--input-format", "xy, json, node or f64", o.input_format,
                io::point_format_from_name);
+    app.add_option_function<std::string>("--columns", [&](const std::string& spec) {
+        std::string error;
+        o.columns = io::parse_columns(spec, error);
+        if (!o.columns) throw std::invalid_argument("--columns: " + error);
+    });
+    app.add_flag("--certify", o.certify);
     app.add_flag("--stats", o.stats);
+    app.add_flag("-q,--quiet", o.quiet);
     if (const std::optional<int> status = cli.parse(args)) return *status;
     if (input->count() + files.size() > 1) {
         return cli.usage_error("more than one input file given");

@@ -1,6 +1,10 @@
 // End-to-end tests of `exidel triangulate`: every input format, output formats, error
 // line numbers, no partial output, --stats, and the output certified in-process.
 #include <dirent.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -72,6 +76,9 @@ std::vector<Point2> hundred_points() {
     p.push_back(p[90]);
     return p;
 }
+
+// A valid input file of three points.
+std::string in_any() { return write_file("any.xy", "0 0\n1 0\n0 1\n"); }
 
 exidel::delaunay::Certificate certify_output(const std::vector<Point2>& pts,
                                              const std::string& json) {
@@ -189,11 +196,18 @@ TEST(ExidelTriangulate, OutputFormatFromExtensionAndOption) {
         ++circles;
     }
     EXPECT_EQ(circles, pts.size());
-    // --format wins over the extension; an unknown extension means json.
+    // --format wins over the extension; no extension means json; an unknown extension
+    // is a usage error (no JSON inside a .png), and nothing is written.
     EXPECT_EQ(run("-i " + in + " -o " + work_path("fmt2.svg") + " -f ele").status, 0);
     EXPECT_EQ(slurp(work_path("fmt2.svg")), ele);
-    EXPECT_EQ(run("-i " + in + " -o " + work_path("fmt3.result")).status, 0);
-    EXPECT_EQ(slurp(work_path("fmt3.result")), json);
+    EXPECT_EQ(run("-i " + in + " -o " + work_path("fmt3")).status, 0);
+    EXPECT_EQ(slurp(work_path("fmt3")), json);
+    std::remove(work_path("fmt4.png").c_str());
+    const RunResult png = run("-i " + in + " -o " + work_path("fmt4.png"));
+    EXPECT_EQ(png.status, 2);
+    EXPECT_NE(png.err.find("cannot tell the output format from"), std::string::npos) << png.err;
+    EXPECT_FALSE(exists(work_path("fmt4.png")));
+    EXPECT_EQ(run("-i " + in + " -o " + work_path("fmt4.png") + " -f json").status, 0);
 }
 
 TEST(ExidelTriangulate, MalformedInputNamesTheLineAndWritesNothing) {
@@ -229,9 +243,17 @@ TEST(ExidelTriangulate, MalformedInputNamesTheLineAndWritesNothing) {
         EXPECT_TRUE(run("-i " + in).out.empty()) << c.file;
     }
     EXPECT_TRUE(files_containing(".tmp.").empty());
+    // A file that cannot be read says why, in the system's words.
     const RunResult missing = run("-i " + work_path("no-such-file.txt"));
     EXPECT_EQ(missing.status, 1);
-    EXPECT_NE(missing.err.find("cannot open"), std::string::npos);
+    EXPECT_NE(missing.err.find("no-such-file.txt': No such file or directory"), std::string::npos)
+        << missing.err;
+    const RunResult directory = run("-i " + work_path(""));
+    EXPECT_EQ(directory.status, 1);
+    EXPECT_NE(directory.err.find("Is a directory"), std::string::npos) << directory.err;
+    const RunResult unwritable = run("-i " + in_any() + " -o /nonexistent-dir/out.json");
+    EXPECT_EQ(unwritable.status, 1);
+    EXPECT_NE(unwritable.err.find("No such file or directory"), std::string::npos) << unwritable.err;
 }
 
 TEST(ExidelTriangulate, EmptyInputIsZeroPoints) {
@@ -312,6 +334,9 @@ struct FlatJson {
                 object(key + ".");
             } else if (s[i] == '"') {
                 values[key] = string();
+            } else if (s.compare(i, 4, "null") == 0) {
+                values[key] = "null";
+                i += 4;
             } else {
                 std::size_t end = i;
                 while (end < s.size() && (std::isalnum(static_cast<unsigned char>(s[end])) ||
@@ -355,10 +380,14 @@ TEST(ExidelTriangulate, StatsIsOneJsonObjectWithEveryKey) {
           "counters.visible_search_orientations", "counters.merge_orientations",
           "counters.merge_incircle_tests", "counters.merge_deleted_edges",
           "counters.merge_cross_edges", "counters.flips", "algorithm", "strategy", "strips",
-          "threads", "read_ms", "triangulate_ms", "write_ms"}) {
+          "threads", "failure", "read_ms", "triangulate_ms", "certify_ms", "write_ms",
+          "total_ms"}) {
         EXPECT_TRUE(v.count(key)) << key << " missing in " << r.err;
     }
-    EXPECT_EQ(v.size(), 30u) << r.err;
+    EXPECT_EQ(v.size(), 33u) << r.err;
+    EXPECT_EQ(v.at("failure"), "null");
+    EXPECT_EQ(v.at("threads"), "1");  // radial runs on one thread whatever --threads says
+    EXPECT_GE(std::stod(v.at("total_ms")), std::stod(v.at("triangulate_ms")));
     EXPECT_EQ(v.at("algorithm"), "external");  // the default
     EXPECT_EQ(v.at("strategy"), "radial");  // auto, below 32768 points
     const auto tri = io::parse_triangulation_json(r.out);
@@ -425,6 +454,7 @@ TEST(ExidelTriangulate, OrdersAndThreadsGiveTheSameTriangles) {
         EXPECT_EQ(v.at("strategy"), order == "auto" ? "radial" : order) << args;
         if (order == "strips") {
             EXPECT_GT(std::stoul(v.at("strips")), 1u) << args;
+            EXPECT_EQ(v.at("threads"), all.ends_with("2") ? "2" : "1") << args;
         }
         EXPECT_TRUE(certify_output(pts, r.out).ok()) << args;
         const auto tri = io::parse_triangulation_json(r.out);
@@ -444,6 +474,184 @@ TEST(ExidelTriangulate, OrdersAndThreadsGiveTheSameTriangles) {
         if (reference.empty()) reference = text;
         EXPECT_EQ(text, reference) << args;
     }
+}
+
+// -o FILE.ele writes FILE.node beside it, numbered like the input .node (1-based here),
+// unless FILE.node is the input itself; the pair reads back and certifies.
+TEST(ExidelTriangulate, EleComesWithANodeFileOfTheSameBase) {
+    const std::vector<Point2> pts = hundred_points();
+    std::ostringstream node;
+    io::write_points(node, pts, io::PointFormat::node, 1);
+    const std::string in = write_file("based.node", node.str());
+    const std::string ele = work_path("based-out.ele"), companion = work_path("based-out.node");
+    std::remove(companion.c_str());
+    ASSERT_EQ(run("-i " + in + " -o " + ele).status, 0);
+    const std::string ele_text = slurp(ele);
+    EXPECT_EQ(slurp(companion), node.str());  // the same numbering, the same doubles
+    const auto read = io::parse_point_file(slurp(companion), io::PointFormat::node);
+    EXPECT_EQ(read.index_base, 1u);
+    auto tri = io::read_triangulation(ele_text, io::TriangulationFormat::ele, read.points);
+    EXPECT_TRUE(exidel::delaunay::certify(read.points, tri).ok());
+    EXPECT_EQ(ele_text.substr(ele_text.find('\n') + 1, 2), "1 ");  // triangles from 1 too
+    // Reading based.node and writing based.ele leaves the input alone.
+    const std::string beside = work_path("based.ele");
+    ASSERT_EQ(run("-i " + in + " -o " + beside).status, 0);
+    EXPECT_EQ(slurp(in), node.str());
+    // From xy input: 0-based.
+    const std::string xy = points_file("based.xy", pts, io::PointFormat::xy);
+    ASSERT_EQ(run("-i " + xy + " -o " + work_path("based-xy.ele")).status, 0);
+    EXPECT_EQ(io::parse_point_file(slurp(work_path("based-xy.node")), io::PointFormat::node)
+                  .index_base,
+              0u);
+}
+
+TEST(ExidelTriangulate, ColumnsPickFieldsOfAWiderCsv) {
+    const std::string csv = write_file(
+        "wide.csv", "\xEF\xBB\xBF\"id\",\"city\",\"lon\",\"lat\"\n1,\"Paris, FR\",2.35,48.85\n"
+                    "2,London,-0.12,51.5\n3,Berlin,13.4,52.52\n4,Rome,12.5,41.9\n");
+    const RunResult by_name = run("-i " + csv + " --columns lon,lat --stats");
+    ASSERT_EQ(by_name.status, 0) << by_name.err;
+    EXPECT_NE(by_name.err.find("\"points\": 4,"), std::string::npos) << by_name.err;
+    const RunResult by_number = run("-i " + csv + " --columns 3,4");
+    EXPECT_EQ(by_number.out, by_name.out);
+    const RunResult without = run("-i " + csv);
+    EXPECT_EQ(without.status, 1);
+    EXPECT_NE(without.err.find("line 1: "), std::string::npos) << without.err;
+    EXPECT_EQ(run("-i " + csv + " --columns lon").status, 2);
+    EXPECT_EQ(run("-i " + csv + " --columns 1,2 --input-format json").status, 2);
+    const RunResult missing = run("-i " + csv + " --columns lon,height");
+    EXPECT_EQ(missing.status, 1);
+    EXPECT_NE(missing.err.find("no column named 'height'"), std::string::npos) << missing.err;
+}
+
+TEST(ExidelTriangulate, StatsAndCompleteSentencesOnFailure) {
+    const std::string in = write_file("kettner2.txt", kettner);
+    const RunResult r = run("-i " + in + " --kernel double --order lexicographic --stats");
+    EXPECT_EQ(r.status, 1);
+    const std::string first = r.err.substr(0, r.err.find('\n'));
+    EXPECT_NE(first.find("neither hull edge at the last point faces the new point"),
+              std::string::npos) << first;
+    EXPECT_NE(first.find("The double kernel is not exact"), std::string::npos) << first;
+    EXPECT_TRUE(first.ends_with(".")) << first;
+    const FlatJson stats(r.err.substr(r.err.find('\n') + 1));
+    EXPECT_EQ(stats.values.at("failure.kind"), "no_visible_edge");
+    EXPECT_EQ(stats.values.at("kernel"), "double");
+}
+
+TEST(ExidelTriangulate, NoteWhenThereAreNoTriangles) {
+    const RunResult line = run("", "0 0\n1 1\n2 2\n1 1\n");
+    EXPECT_EQ(line.status, 0);
+    EXPECT_EQ(line.err, "exidel: note: no triangles: the distinct points are all on one line "
+                        "(3); the hull lists them in order\n");
+    const RunResult two = run("", "0 0\n1 1\n");
+    EXPECT_NE(two.err.find("fewer than three distinct points (2)"), std::string::npos) << two.err;
+    EXPECT_TRUE(run("--quiet", "0 0\n1 1\n").err.empty());
+    EXPECT_TRUE(run("", "0 0\n1 0\n0 1\n").err.empty());
+}
+
+TEST(ExidelTriangulate, CertifyOption) {
+    const std::vector<Point2> pts = hundred_points();
+    const std::string in = points_file("certify.xy", pts, io::PointFormat::xy);
+    const RunResult ok = run("-i " + in + " --certify --stats");
+    ASSERT_EQ(ok.status, 0) << ok.err;
+    EXPECT_EQ(ok.err.rfind("exidel: certified: ", 0), 0u) << ok.err;
+    EXPECT_TRUE(certify_output(pts, ok.out).ok());
+}
+
+// SIGINT and SIGTERM while a run waits for its input: the temporary output file, created
+// at the start, is removed and the process ends by the signal.
+TEST(ExidelTriangulate, InterruptLeavesNoFile) {
+    for (const int sig : {SIGTERM, SIGINT}) {
+        const std::string dir = work_path("interrupt" + std::to_string(sig));
+        ::mkdir(dir.c_str(), 0755);
+        int feed[2];
+        ASSERT_EQ(::pipe(feed), 0);
+        const pid_t child = ::fork();
+        ASSERT_GE(child, 0);
+        if (child == 0) {
+            ::dup2(feed[0], 0);
+            ::close(feed[1]);
+            const std::string out = dir + "/out.json";
+            ::execl(EXIDEL_CLI_PATH, "exidel", "triangulate", "-o", out.c_str(), "-q",
+                    static_cast<char*>(nullptr));
+            ::_exit(127);
+        }
+        ::close(feed[0]);
+        // Wait (at most 20 s) for the temporary file, then interrupt.
+        const auto listing = [&] {
+            std::vector<std::string> names;
+            if (DIR* d = ::opendir(dir.c_str())) {
+                while (const dirent* e = ::readdir(d)) {
+                    if (e->d_name[0] != '.') names.push_back(e->d_name);
+                }
+                ::closedir(d);
+            }
+            return names;
+        };
+        for (int i = 0; i < 2000 && listing().empty(); ++i) ::usleep(10000);
+        ASSERT_EQ(listing().size(), 1u);
+        EXPECT_EQ(listing()[0].rfind("out.json.tmp.", 0), 0u);
+        ASSERT_EQ(::write(feed[1], "0 0\n1 0\n", 8), 8);  // partly read input, too
+        ::usleep(20000);
+        ::kill(child, sig);
+        int status = 0;
+        ASSERT_EQ(::waitpid(child, &status, 0), child);
+        ::close(feed[1]);
+        EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == sig) << status;
+        EXPECT_TRUE(listing().empty()) << listing().front();
+    }
+}
+
+TEST(ExidelCertify, CertifiesJsonAndEleAndReportsFindings) {
+    const std::vector<Point2> pts = hundred_points();
+    const std::string in = points_file("cert.xy", pts, io::PointFormat::xy);
+    ASSERT_EQ(run("-i " + in + " -o " + work_path("cert.json")).status, 0);
+    ASSERT_EQ(run("-i " + in + " -o " + work_path("cert.ele")).status, 0);
+    for (const char* file : {"cert.json", "cert.ele"}) {
+        const RunResult r = run_exidel("cert", "certify " + in + " " + work_path(file), "");
+        EXPECT_EQ(r.status, 0) << file << r.out << r.err;
+        EXPECT_EQ(r.out.rfind("certified: the Delaunay triangulation of 100 points (98 distinct), ", 0),
+                  0u) << r.out;
+    }
+    // The kite's wrong diagonal: one typed finding, exit status 1.
+    const std::string kite = write_file("kite.xy", "0 0\n1 0\n0.6 0.6\n0 1\n");
+    const std::string wrong = write_file("kite.ele", "2 3 0\n0 0 1 3\n1 1 2 3\n");
+    const RunResult bad = run_exidel("cert", "certify " + kite + " " + wrong, "");
+    EXPECT_EQ(bad.status, 1);
+    EXPECT_EQ(bad.out.rfind("not_delaunay: ", 0), 0u) << bad.out;
+    EXPECT_NE(bad.out.find("\nnot certified: 1 findings\n"), std::string::npos) << bad.out;
+    // Unreadable files and usage errors.
+    const RunResult missing = run_exidel("cert", "certify " + kite + " " + work_path("none.json"), "");
+    EXPECT_EQ(missing.status, 1);
+    EXPECT_NE(missing.err.find("No such file or directory"), std::string::npos) << missing.err;
+    const RunResult malformed =
+        run_exidel("cert", "certify " + kite + " " + write_file("bad.ele", "1 3 0\n0 0 1\n"), "");
+    EXPECT_EQ(malformed.status, 1);
+    EXPECT_NE(malformed.err.find("bad.ele: line 2: "), std::string::npos) << malformed.err;
+    EXPECT_EQ(run_exidel("cert", "certify " + kite, "").status, 2);
+    EXPECT_EQ(run_exidel("cert", "certify " + kite + " " + work_path("x.off"), "").status, 2);
+    EXPECT_EQ(run_exidel("cert", "certify --help", "").status, 0);
+}
+
+// A picture of 2 x 10^5 points opens in librsvg (XML parsers cap one attribute at 10 MB,
+// which a single path of every triangle passed near 10^5 points).
+TEST(ExidelTriangulate, LargeSvgOpensInLibrsvg) {
+#ifndef EXIDEL_RSVG_CONVERT
+    GTEST_SKIP() << "rsvg-convert not found at configure time (Debian: librsvg2-bin)";
+#else
+    std::vector<Point2> pts;
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (int i = 0; i < 200000; ++i) pts.push_back({u(rng), u(rng)});
+    const std::string in = points_file("big.f64", pts, io::PointFormat::f64);
+    const std::string svg = work_path("big.svg"), png = work_path("big.png");
+    std::remove(png.c_str());
+    ASSERT_EQ(run("-i " + in + " -o " + svg).status, 0);
+    const std::string render = std::string("'") + EXIDEL_RSVG_CONVERT + "' -w 200 -o '" + png +
+                               "' '" + svg + "' 2> '" + work_path("rsvg.err") + "'";
+    EXPECT_EQ(std::system(render.c_str()), 0) << slurp(work_path("rsvg.err"));
+    EXPECT_EQ(slurp(png).substr(1, 3), "PNG");
+#endif
 }
 
 }  // namespace

@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <optional>
+#include <stdexcept>
 #include <random>
 #include <sstream>
 #include <string>
@@ -104,6 +106,88 @@ TEST(ReadXy, ErrorsNameTheLine) {
     expect_error("x y\nx y\n", PointFormat::xy, 2, "not a number");
 }
 
+TEST(ReadXy, ByteOrderMarkAndQuotedFields) {
+    // A spreadsheet's CSV export: a UTF-8 byte order mark, quoted header and values.
+    const Points p = parse_points("\xEF\xBB\xBF\"x\",\"y\"\r\n\"1.5\",2\r\n3, \"4\"\r\n",
+                                  PointFormat::xy);
+    ASSERT_EQ(p.size(), 2u);
+    EXPECT_EQ(p[0], (Point2{1.5, 2}));
+    EXPECT_EQ(p[1], (Point2{3, 4}));
+    // The mark is skipped by the other text formats too; elsewhere it is an error.
+    EXPECT_EQ(parse_points("\xEF\xBB\xBF[[1, 2]]", PointFormat::json).size(), 1u);
+    EXPECT_EQ(parse_points("\xEF\xBB\xBF" "1 2 0 0\n0 5 6\n", PointFormat::node).size(), 1u);
+    expect_error("1 2\n\xEF\xBB\xBF" "3 4\n", PointFormat::xy, 2, "not a number");
+    expect_error("\"x\",\"y\n", PointFormat::xy, 1, "unterminated quoted field");
+    expect_error("\"x\"z,y\n", PointFormat::xy, 1, "a quote inside a field is not supported");
+}
+
+Points with_columns(std::string_view text, std::string_view spec) {
+    std::string error;
+    const std::optional<Columns> c = parse_columns(spec, error);
+    EXPECT_TRUE(c) << error;
+    return parse_point_file(text, PointFormat::xy, ReadOptions{c}).points;
+}
+
+ReadError columns_error(std::string_view text, std::string_view spec) {
+    try {
+        with_columns(text, spec);
+        ADD_FAILURE() << "no error for: " << text;
+    } catch (const ReadError& e) {
+        return e;
+    }
+    return ReadError::at_line(0, "none");
+}
+
+TEST(ReadXy, ColumnsByNumberAndByName) {
+    const std::string csv =
+        "id,\"name, with comma\",lon,lat\n"
+        "1,\"Paris, FR\",2.35,48.85\n"
+        "2,,-0.12,51.5\n";  // an empty field that is not picked is fine
+    for (const std::string_view spec : {"3,4", "lon,lat"}) {
+        const Points p = with_columns(csv, spec);
+        ASSERT_EQ(p.size(), 2u) << spec;
+        EXPECT_EQ(p[0], (Point2{2.35, 48.85}));
+        EXPECT_EQ(p[1], (Point2{-0.12, 51.5}));
+    }
+    EXPECT_EQ(with_columns(csv, "lat,lon")[0], (Point2{48.85, 2.35}));  // any order
+    // Without a header, by number: every line is data.
+    EXPECT_EQ(with_columns("7 1 2\n8 3 4\n", "2,3"), (Points{{1, 2}, {3, 4}}));
+
+    EXPECT_NE(std::string(columns_error(csv, "lon,height").what())
+                  .find("line 1: no column named 'height' in the first line ('id', "),
+              std::string::npos);
+    EXPECT_EQ(columns_error("1 2 3\n4 5 6\n", "2,4").line(), 1u);     // no 4th field
+    EXPECT_EQ(columns_error("1 2 3\n4 5\n", "1,2").line(), 2u);       // width changes
+    EXPECT_EQ(columns_error("a,b,a\n1,2,3\n", "a,b").line(), 1u);     // ambiguous name
+    EXPECT_EQ(columns_error("a,b,c\n1,2,3\n1,,3\n", "1,2").line(), 3u);  // picked and empty
+
+    std::string error;
+    for (const std::string_view bad : {"", "1", "1,2,3", ",2", "0,1", "1x,2"}) {
+        EXPECT_FALSE(parse_columns(bad, error)) << bad;
+        EXPECT_FALSE(error.empty());
+    }
+    EXPECT_THROW(parse_point_file("[]", PointFormat::json, ReadOptions{Columns{"1", "2"}}),
+                 std::invalid_argument);
+    // Without columns, a wider line says how to pick two.
+    expect_error("1,2,3\n", PointFormat::xy, 1, "pick two with --columns X,Y");
+}
+
+TEST(ReadFile, SaysWhyAFileCannotBeRead) {
+    const auto message = [](const std::string& path) {
+        try {
+            read_file(path);
+        } catch (const std::runtime_error& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_EQ(message("/nonexistent/points.xy"),
+              "cannot read '/nonexistent/points.xy': No such file or directory");
+    EXPECT_EQ(message("/"), "cannot read '/': Is a directory");
+    // /proc files report size 0 but have contents: the size is only a hint.
+    EXPECT_FALSE(read_file("/proc/self/status").empty());
+}
+
 TEST(ReadJson, ArrayOfPairs) {
     const Points p = parse_points(" [ [0, 0],\n[1.5, -2e-3] ,[ -0 ,1E2]]\n\n", PointFormat::json);
     ASSERT_EQ(p.size(), 3u);
@@ -145,6 +229,13 @@ TEST(ReadNode, ZeroAndOneBasedWithAttributesAndMarkers) {
     EXPECT_EQ(defaults, expected);
     EXPECT_TRUE(parse_points("", PointFormat::node).empty());
     EXPECT_TRUE(parse_points("0 2 0 0\n", PointFormat::node).empty());
+    // The numbering base is kept, so that an .ele written for the file counts the same way,
+    // and the writer numbers from it.
+    EXPECT_EQ(parse_point_file("3\n1 0 0\n2 1 0\n3 0 1\n", PointFormat::node).index_base, 1u);
+    EXPECT_EQ(parse_point_file("3\n0 0 0\n1 1 0\n2 0 1\n", PointFormat::node).index_base, 0u);
+    std::ostringstream out;
+    write_points(out, expected, PointFormat::node, 1);
+    EXPECT_EQ(out.str(), "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n");
 }
 
 TEST(ReadNode, ErrorsNameTheLine) {

@@ -3,7 +3,9 @@
 // about the formats, not about which triangulation is right.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -11,6 +13,7 @@
 #include "exidel/delaunay/triangulate.hpp"
 #include "exidel/io/points.hpp"
 #include "exidel/io/triangulation.hpp"
+#include "exidel/predicates/adaptive.hpp"
 
 namespace exidel::io {
 namespace {
@@ -71,6 +74,11 @@ TEST(WriteTriangulation, EleAndOff) {
               "2 3 0\n0 0 1 2\n1 0 2 3\n");
     EXPECT_EQ(written(square_triangulation(), TriangulationFormat::off),
               "OFF\n5 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 0\n3 0 1 2\n3 0 2 3\n");
+    // Counted from 1, for a .node counted from 1: triangles and vertices alike.
+    std::ostringstream one;
+    write_triangulation(one, square, square_triangulation(), TriangulationFormat::ele,
+                        WriteOptions{1});
+    EXPECT_EQ(one.str(), "2 3 0\n1 1 2 3\n2 1 3 4\n");
 }
 
 // Well-formed enough for a browser: one root, every element closed in order.
@@ -123,6 +131,46 @@ TEST(WriteTriangulation, SvgIsWellFormedWithYUp) {
     }
 }
 
+TEST(WriteTriangulation, SvgPathsStayShortForXmlParsers) {
+    // A 60 x 60 grid: 6962 triangles and a hull of 236 vertices, drawn with paths of at
+    // most svg_path_items triangles each, as XML parsers limit an attribute's length.
+    std::vector<Point2> grid;
+    for (int i = 0; i < 60; ++i) {
+        for (int j = 0; j < 60; ++j) grid.push_back({static_cast<double>(i), static_cast<double>(j)});
+    }
+    const delaunay::Result r = delaunay::triangulate(grid, AdaptiveKernel{});
+    ASSERT_TRUE(r.ok());
+    const std::string svg = written(r.triangulation, TriangulationFormat::svg, grid);
+    std::string why;
+    EXPECT_TRUE(balanced_tags(svg, why)) << why;
+    std::size_t paths = 0, triangles = 0, longest = 0;
+    for (std::size_t at = svg.find("<path d=\""); at != std::string::npos;
+         at = svg.find("<path d=\"", at + 1)) {
+        const std::size_t end = svg.find('"', at + 9);
+        const std::string d = svg.substr(at + 9, end - at - 9);
+        longest = std::max(longest, d.size());
+        ++paths;
+        for (std::size_t z = d.find('Z'); z != std::string::npos; z = d.find('Z', z + 1)) ++triangles;
+    }
+    const std::size_t n = r.triangulation.triangle_count();
+    EXPECT_EQ(n, 2u * 59 * 59);
+    EXPECT_EQ(triangles, n + 1);  // and the hull's Z
+    EXPECT_EQ(paths, (n + svg_path_items - 1) / svg_path_items + 1);
+    EXPECT_LT(longest, 60 * svg_path_items);
+    // A hull longer than one path: pieces that join end to start, covering every edge.
+    Triangulation big;
+    big.collinear = true;
+    for (std::uint32_t i = 0; i < 2500; ++i) big.hull.push_back(i % 60);
+    const std::string chain = written(big, TriangulationFormat::svg, grid);
+    EXPECT_TRUE(balanced_tags(chain, why)) << why;
+    std::size_t pieces = 0;
+    for (std::size_t at = chain.find("<path d=\"M"); at != std::string::npos;
+         at = chain.find("<path d=\"M", at + 1)) {
+        ++pieces;
+    }
+    EXPECT_EQ(pieces, 3u);
+}
+
 TEST(ParseTriangulationJson, RoundTripAndCertify) {
     const std::string json = written(square_triangulation(), TriangulationFormat::json);
     Triangulation t = parse_triangulation_json(json);
@@ -140,6 +188,55 @@ TEST(ParseTriangulationJson, RoundTripAndCertify) {
         "{ \"hull\":[0,1],\"duplicates\":[ ],\"halfedges\":[],\"triangles\":[] }");
     EXPECT_TRUE(t.collinear);
     EXPECT_EQ(t.hull, (std::vector<std::uint32_t>{0, 1}));
+}
+
+TEST(ReadTriangulation, EleAndJsonWithoutDuplicatesCertify) {
+    // .ele counted from 1, read back: halfedges, hull and duplicates derived.
+    std::ostringstream ele;
+    write_triangulation(ele, square, square_triangulation(), TriangulationFormat::ele,
+                        WriteOptions{1});
+    Triangulation t = read_triangulation(ele.str(), TriangulationFormat::ele, square);
+    EXPECT_EQ(t.triangles, square_triangulation().triangles);
+    EXPECT_EQ(t.halfedges, square_triangulation().halfedges);
+    EXPECT_EQ(t.hull, square_triangulation().hull);
+    EXPECT_EQ(t.duplicates, square_triangulation().duplicates);
+    EXPECT_TRUE(delaunay::certify(square, t).ok());
+    // delaunator's layout has no "duplicates": derived.
+    t = read_triangulation(
+        "{\"triangles\": [0,1,2,0,2,3], \"halfedges\": [-1,-1,3,2,-1,-1], \"hull\": [0,1,2,3]}",
+        TriangulationFormat::json, square);
+    EXPECT_EQ(t.duplicates, square_triangulation().duplicates);
+    EXPECT_TRUE(delaunay::certify(square, t).ok());
+    // A wrong triangulation is read as it is and the certifier finds what is wrong: the
+    // other diagonal of a square is Delaunay too, so move point 2 inward first.
+    const std::vector<Point2> kite{{0, 0}, {1, 0}, {0.6, 0.6}, {0, 1}};
+    t = read_triangulation("2 3 0\n0 0 1 3\n1 1 2 3\n", TriangulationFormat::ele, kite);
+    EXPECT_TRUE(delaunay::certify(kite, t).has(delaunay::FindingKind::not_delaunay));
+    // Two triangles on top of each other: no twins found twice, the boundary is no cycle.
+    t = read_triangulation("2 3 0\n0 0 1 2\n1 0 1 2\n", TriangulationFormat::ele, square);
+    EXPECT_TRUE(t.hull.empty());
+    EXPECT_FALSE(delaunay::certify(square, t).ok());
+    // Collinear points: no triangles, the hull is their chain.
+    const std::vector<Point2> line{{2, 2}, {0, 0}, {1, 1}};
+    t = read_triangulation("0 3 0\n", TriangulationFormat::ele, line);
+    EXPECT_EQ(t.hull, (std::vector<std::uint32_t>{1, 2, 0}));
+    EXPECT_TRUE(delaunay::certify(line, t).ok());
+
+    const auto error_line = [](const std::string& text, const std::string& reason) {
+        try {
+            read_triangulation(text, TriangulationFormat::ele, square);
+        } catch (const ReadError& e) {
+            EXPECT_NE(std::string(e.what()).find(reason), std::string::npos) << e.what();
+            return e.line();
+        }
+        ADD_FAILURE() << "accepted: " << text;
+        return std::size_t{0};
+    };
+    EXPECT_EQ(error_line("2 3 0\n0 0 1 2\n", "truncated"), 2u);
+    EXPECT_EQ(error_line("1 3 0\n0 0 1 5\n", "vertex"), 2u);
+    EXPECT_EQ(error_line("1 4 0\n", "nodes per triangle"), 1u);
+    EXPECT_EQ(error_line("# c\n1 3\n1 1 2 3\n2 1 2 3\n", "more triangle lines"), 4u);
+    EXPECT_THROW(read_triangulation("", TriangulationFormat::svg, square), std::invalid_argument);
 }
 
 TEST(ParseTriangulationJson, ErrorsNameTheLine) {

@@ -3,11 +3,14 @@
 #include "exidel/io/triangulation.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
 #include <ostream>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "json.hpp"
 #include "text.hpp"
@@ -46,14 +49,14 @@ void write_json(std::ostream& out, const Triangulation& tri) {
     w.text("}\n");
 }
 
-void write_ele(std::ostream& out, const Triangulation& tri) {
+void write_ele(std::ostream& out, const Triangulation& tri, std::uint64_t base) {
     NumberWriter w(out);
     const std::size_t n = tri.triangle_count();
     w.number(static_cast<std::uint64_t>(n)).text(" 3 0\n");
     for (std::size_t t = 0; t < n; ++t) {
-        w.number(static_cast<std::uint64_t>(t));
+        w.number(t + base);
         for (std::size_t k = 0; k < 3; ++k) {
-            w.text(" ").number(static_cast<std::uint64_t>(tri.triangles[3 * t + k]));
+            w.text(" ").number(tri.triangles[3 * t + k] + base);
         }
         w.text("\n");
     }
@@ -129,24 +132,37 @@ void write_svg(std::ostream& out, std::span<const Point2> points, const Triangul
         .text(" triangles, ")
         .number(static_cast<std::uint64_t>(tri.hull.size()))
         .text(" hull vertices -->\n");
+    // Each group's style is set once; its paths carry only their data.
     if (tri.triangle_count() > 0) {
-        w.text("<path fill=\"#dde6f3\" stroke=\"#3b5b92\" stroke-width=\"0.5\" "
-               "stroke-linejoin=\"round\" d=\"");
+        w.text("<g fill=\"#dde6f3\" stroke=\"#3b5b92\" stroke-width=\"0.5\" "
+               "stroke-linejoin=\"round\">\n");
         for (std::size_t t = 0; t < tri.triangle_count(); ++t) {
-            xy(t ? " M" : "M", tri.triangles[3 * t]);
+            const bool first = t % svg_path_items == 0;
+            if (first) w.text(t ? "\"/>\n<path d=\"" : "<path d=\"");
+            xy(first ? "M" : " M", tri.triangles[3 * t]);
             xy(" L", tri.triangles[3 * t + 1]);
             xy(" L", tri.triangles[3 * t + 2]);
             w.text(" Z");
         }
-        w.text("\"/>\n");
+        w.text("\"/>\n</g>\n");
     }
     if (!tri.hull.empty()) {
-        // A triangulated hull is a closed cycle; a collinear "hull" is an open chain.
-        w.text("<path fill=\"none\" stroke=\"#c0392b\" stroke-width=\"2\" "
-               "stroke-linejoin=\"round\" d=\"");
-        for (std::size_t i = 0; i < tri.hull.size(); ++i) xy(i ? " L" : "M", tri.hull[i]);
-        if (!tri.collinear) w.text(" Z");
-        w.text("\"/>\n");
+        // A triangulated hull is a closed cycle; a collinear "hull" is an open chain. In
+        // pieces of svg_path_items edges, each starting where the previous one ended.
+        w.text("<g fill=\"none\" stroke=\"#c0392b\" stroke-width=\"2\" "
+               "stroke-linejoin=\"round\" stroke-linecap=\"round\">\n<path d=\"");
+        const std::size_t h = tri.hull.size();
+        const std::size_t vertices = tri.collinear ? h : h + 1;  // the cycle returns to the start
+        const bool one_cycle = !tri.collinear && h <= svg_path_items;  // closed by Z instead
+        for (std::size_t i = 0; i < (one_cycle ? h : vertices); ++i) {
+            const bool restart = i > 0 && i % svg_path_items == 0 && i + 1 < vertices;
+            if (restart) {
+                xy(" L", tri.hull[i % h]);
+                w.text("\"/>\n<path d=\"");
+            }
+            xy(i == 0 || restart ? "M" : " L", tri.hull[i % h]);
+        }
+        w.text(one_cycle ? " Z\"/>\n</g>\n" : "\"/>\n</g>\n");
     }
     const double r = std::clamp(Frame::size / (4 * std::sqrt(static_cast<double>(points.size()) + 1)),
                                 0.5, 4.0);
@@ -169,6 +185,144 @@ std::vector<T> integer_array(detail::JsonCursor& j, std::string_view key, std::i
     } while (j.accept(','));
     j.expect(']', "or ',' in the array \"" + std::string(key) + "\"");
     return v;
+}
+
+// Marks "the file had no duplicates key" inside parse_json's result (never a valid index).
+constexpr std::uint32_t no_duplicates_key = 0xffffffff;
+
+// Triangle's .ele: the triangles alone, as input indices.
+Triangulation parse_ele(std::string_view text, std::size_t point_count) {
+    Triangulation tri;
+    std::size_t expected = 0, attributes = 0, base = 0, count = 0;
+    bool have_header = false;
+    const auto integer = [](std::size_t line, std::string_view field, const char* what,
+                            std::uint64_t lo, std::uint64_t hi) {
+        std::uint64_t v = 0;
+        const auto r = std::from_chars(field.data(), field.data() + field.size(), v);
+        if (r.ec != std::errc{} || r.ptr != field.data() + field.size() || v < lo || v > hi) {
+            throw ReadError::at_line(line, std::string(what) + ": " + quoted(field) +
+                                               " is not a whole number in [" +
+                                               std::to_string(lo) + ", " + std::to_string(hi) +
+                                               "]");
+        }
+        return static_cast<std::size_t>(v);
+    };
+    std::vector<std::string_view> fields;
+    const std::size_t lines = detail::for_each_line(text, [&](std::size_t number,
+                                                              std::string_view line) {
+        fields.clear();
+        const std::string_view content = detail::strip_comment(line);
+        for (std::size_t i = 0; i < content.size();) {
+            while (i < content.size() && detail::is_blank(content[i])) ++i;
+            const std::size_t start = i;
+            while (i < content.size() && !detail::is_blank(content[i])) ++i;
+            if (i > start) fields.push_back(content.substr(start, i - start));
+        }
+        if (fields.empty()) return;
+        if (!have_header) {
+            if (fields.size() < 2 || fields.size() > 3) {
+                throw ReadError::at_line(number, "the header is \"triangles 3 [attributes]\"");
+            }
+            expected = integer(number, fields[0], "number of triangles", 0, 0x7fffffff / 3);
+            integer(number, fields[1], "nodes per triangle (only 3 is supported)", 3, 3);
+            if (fields.size() == 3) attributes = integer(number, fields[2], "attributes", 0, 1 << 20);
+            have_header = true;
+            tri.triangles.reserve(3 * std::min(expected, text.size() / 8));
+            return;
+        }
+        if (count == expected) {
+            throw ReadError::at_line(number, "more triangle lines than the " +
+                                                 std::to_string(expected) +
+                                                 " the header announces");
+        }
+        if (fields.size() != 4 + attributes) {
+            throw ReadError::at_line(number, "expected " + std::to_string(4 + attributes) +
+                                                 " fields (index v0 v1 v2" +
+                                                 (attributes ? " attributes" : "") + "), got " +
+                                                 std::to_string(fields.size()));
+        }
+        if (count == 0) {
+            base = integer(number, fields[0], "first triangle index", 0, 1);
+        } else {
+            integer(number, fields[0], "triangle index", base + count, base + count);
+        }
+        for (std::size_t k = 1; k <= 3; ++k) {
+            if (point_count == 0) throw ReadError::at_line(number, "a triangle, but no points");
+            tri.triangles.push_back(static_cast<std::uint32_t>(
+                integer(number, fields[k], "vertex", base, base + point_count - 1) - base));
+        }
+        ++count;
+    });
+    if (!have_header) throw ReadError::at_line(1, "empty .ele file (no header)");
+    if (count != expected) {
+        throw ReadError::at_line(std::max<std::size_t>(lines, 1),
+                                 "truncated: the file ends after " + std::to_string(count) +
+                                     " of the " + std::to_string(expected) +
+                                     " triangles the header announces");
+    }
+    return tri;
+}
+
+// halfedges from triangles: the twin of a -> b is the half-edge b -> a, when exactly one
+// half-edge runs each way.
+void link_halfedges(Triangulation& tri) {
+    const std::size_t n = tri.triangles.size();
+    const auto key = [&](std::size_t e) {
+        const std::size_t next = e % 3 == 2 ? e - 2 : e + 1;
+        return std::uint64_t{tri.triangles[e]} << 32 | tri.triangles[next];
+    };
+    std::vector<std::uint32_t> order(n);
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](auto a, auto b) { return key(a) < key(b); });
+    const auto unique = [&](std::uint64_t k) -> std::int64_t {
+        const auto lo = std::lower_bound(order.begin(), order.end(), k,
+                                         [&](std::uint32_t e, std::uint64_t v) { return key(e) < v; });
+        if (lo == order.end() || key(*lo) != k) return -1;
+        if (lo + 1 != order.end() && key(*(lo + 1)) == k) return -1;
+        return *lo;
+    };
+    tri.halfedges.assign(n, -1);
+    for (std::size_t e = 0; e < n; ++e) {
+        const std::uint64_t k = key(e);
+        if (unique(k) < 0) continue;
+        const std::int64_t twin = unique(k << 32 | k >> 32);
+        if (twin >= 0) tri.halfedges[e] = static_cast<std::int32_t>(twin);
+    }
+}
+
+// The boundary cycle (half-edges without twin) from its lexicographically smallest vertex;
+// empty when the boundary half-edges do not form one cycle.
+std::vector<std::uint32_t> boundary_hull(std::span<const Point2> points, const Triangulation& tri) {
+    const std::size_t n = tri.triangles.size();
+    std::vector<std::int64_t> out_edge(points.size(), -1);  // the boundary half-edge leaving v
+    std::size_t boundary = 0;
+    for (std::size_t e = 0; e < n; ++e) {
+        if (tri.halfedges[e] >= 0) continue;
+        std::int64_t& slot = out_edge[tri.triangles[e]];
+        if (slot >= 0) return {};  // two boundary edges leave one vertex: not one cycle
+        slot = static_cast<std::int64_t>(e);
+        ++boundary;
+    }
+    std::int64_t start = -1;
+    for (std::size_t v = 0; v < points.size(); ++v) {
+        if (out_edge[v] < 0) continue;
+        if (start < 0 || points[v].x < points[static_cast<std::size_t>(start)].x ||
+            (points[v].x == points[static_cast<std::size_t>(start)].x &&
+             points[v].y < points[static_cast<std::size_t>(start)].y)) {
+            start = static_cast<std::int64_t>(v);
+        }
+    }
+    std::vector<std::uint32_t> hull;
+    if (start < 0) return hull;
+    auto v = static_cast<std::uint32_t>(start);
+    do {
+        hull.push_back(v);
+        const auto e = static_cast<std::size_t>(out_edge[v]);
+        v = tri.triangles[e % 3 == 2 ? e - 2 : e + 1];
+        if (out_edge[v] < 0 || hull.size() > boundary) return {};
+    } while (v != static_cast<std::uint32_t>(start));
+    if (hull.size() != boundary) return {};
+    return hull;
 }
 
 }  // namespace
@@ -201,16 +355,19 @@ std::optional<TriangulationFormat> triangulation_format_from_path(std::string_vi
 }
 
 void write_triangulation(std::ostream& out, std::span<const Point2> points,
-                         const Triangulation& tri, TriangulationFormat format) {
+                         const Triangulation& tri, TriangulationFormat format,
+                         const WriteOptions& options) {
     switch (format) {
         case TriangulationFormat::json: return write_json(out, tri);
-        case TriangulationFormat::ele: return write_ele(out, tri);
+        case TriangulationFormat::ele: return write_ele(out, tri, options.index_base);
         case TriangulationFormat::off: return write_off(out, points, tri);
         case TriangulationFormat::svg: return write_svg(out, points, tri);
     }
 }
 
-Triangulation parse_triangulation_json(std::string_view text) {
+// The json layout; with `duplicates_optional` a missing "duplicates" key is marked by
+// no_duplicates_key for read_triangulation to derive.
+static Triangulation parse_json(std::string_view text, bool duplicates_optional) {
     detail::JsonCursor j(text);
     Triangulation tri;
     constexpr std::int64_t max_u32 = 0xffffffff, max_i32 = 0x7fffffff;
@@ -232,13 +389,16 @@ Triangulation parse_triangulation_json(std::string_view text) {
         }
     } while (j.accept(','));
     j.expect('}', "or ',' after an array");
-    for (std::size_t k = 0; k < 4; ++k) {
+    for (std::size_t k = 0; k < (duplicates_optional ? 3 : 4); ++k) {
         if (!seen[k]) j.fail("key \"" + std::string(keys[k]) + "\" is missing");
     }
     if (!j.at_end()) j.fail("unexpected " + j.found() + " after the closing '}'");
     tri.collinear = tri.triangles.empty();
+    if (duplicates_optional && !seen[3]) tri.duplicates = {no_duplicates_key};
     return tri;
 }
+
+Triangulation parse_triangulation_json(std::string_view text) { return parse_json(text, false); }
 
 void fill_vertex_of_input(std::span<const Point2> points, Triangulation& tri) {
     std::vector<std::uint32_t> order(points.size());
@@ -253,6 +413,45 @@ void fill_vertex_of_input(std::span<const Point2> points, Triangulation& tri) {
         const bool repeat = j > 0 && points[order[j]] == points[order[j - 1]];
         tri.vertex_of_input[order[j]] = repeat ? tri.vertex_of_input[order[j - 1]] : order[j];
     }
+}
+
+delaunay::Triangulation read_triangulation(std::string_view text, TriangulationFormat format,
+                                           std::span<const Point2> points) {
+    Triangulation tri;
+    if (format == TriangulationFormat::json) {
+        tri = parse_json(text, true);
+    } else if (format == TriangulationFormat::ele) {
+        tri = parse_ele(text, points.size());
+        tri.collinear = tri.triangles.empty();
+        link_halfedges(tri);
+        tri.hull = boundary_hull(points, tri);
+    } else {
+        throw std::invalid_argument("cannot read a triangulation in the " +
+                                    std::string(to_string(format)) + " format (json or ele)");
+    }
+    fill_vertex_of_input(points, tri);
+    const bool derive_duplicates = format == TriangulationFormat::ele ||
+                                   (tri.duplicates.size() == 1 &&
+                                    tri.duplicates[0] == no_duplicates_key);
+    if (derive_duplicates) {
+        tri.duplicates.clear();
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            if (tri.vertex_of_input[i] != i) tri.duplicates.push_back(static_cast<std::uint32_t>(i));
+        }
+    }
+    if (tri.collinear && format == TriangulationFormat::ele) {
+        // No triangles: the certifier then expects the chain of distinct points in
+        // lexicographic order, which is all a triangle-less file can mean.
+        std::vector<std::uint32_t> chain;
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            if (tri.vertex_of_input[i] == i) chain.push_back(static_cast<std::uint32_t>(i));
+        }
+        std::sort(chain.begin(), chain.end(), [&](std::uint32_t a, std::uint32_t b) {
+            return points[a].x != points[b].x ? points[a].x < points[b].x : points[a].y < points[b].y;
+        });
+        tri.hull = std::move(chain);
+    }
+    return tri;
 }
 
 }  // namespace exidel::io

@@ -5,9 +5,13 @@
 //   xy    (.txt .xy .csv, and the default) one point per line: two coordinates separated
 //         by blanks (space, tab) and/or one comma: "1 2", "1,2", "1, 2". Everything from
 //         '#' to the end of the line is a comment; lines blank after that are skipped.
-//         Header: the FIRST non-blank line may be a header of exactly two names, each
-//         starting with a letter and not a spelling of nan/inf ("x,y", "lon lat"); it
-//         is skipped. Any later line of names is an error.
+//         A field may be quoted ("x","y"; "1.5"), as spreadsheets write CSV; a quoted
+//         field may hold commas and blanks but no quote. Header: the FIRST non-blank
+//         line may be a header of names, each starting with a letter and not a spelling
+//         of nan/inf ("x,y", "lon lat"); it is skipped. Any later line of names is an
+//         error. Wider files (an id, a label, then x and y): ReadOptions::columns picks
+//         the two fields by number or by header name; every line then has the field
+//         count of the first, and the fields not picked may be anything, empty included.
 //   json  (.json) exactly a JSON array of [x, y] pairs: [[0, 0], [1, 0.5]]. Numbers use
 //         JSON's grammar (no hex, no NaN/Infinity, no leading '+' or zeros); nothing but
 //         whitespace may follow the closing bracket. An empty file is 0 points.
@@ -22,7 +26,8 @@
 // Coordinates in the text formats are decimal or C99 hexadecimal floats (json: decimal
 // only), rounded to the nearest double (exidel/io/number.hpp). Every format rejects NaN
 // and infinity. Empty input (nothing, or only blanks and comments) is 0 points, not an
-// error.
+// error. A UTF-8 byte order mark at the start of a text file (spreadsheets on Windows
+// write one) is skipped.
 #pragma once
 
 #include <cstddef>
@@ -67,17 +72,48 @@ private:
     std::string reason_;
 };
 
+/// Which two fields of an xy line are x and y: each a field number counted from 1 (as
+/// `cut -f` counts) or a name of the header line.
+struct Columns {
+    std::string x, y;
+};
+/// "X,Y" (e.g. "2,3" or "lon,lat") to Columns; nullopt with `error` set when it is not
+/// two non-empty items, or a number is 0.
+std::optional<Columns> parse_columns(std::string_view spec, std::string& error);
+
+struct ReadOptions {
+    std::optional<Columns> columns;  // xy only; nullopt: exactly two fields per line
+};
+
+/// A point file's contents: the points, and the first vertex index of a .node file (0
+/// or 1; 0 for every other format), so that a .ele written for it counts the same way.
+struct PointFile {
+    std::vector<Point2> points;
+    unsigned index_base = 0;
+};
+
 /// Parses the whole of `data` (a file's bytes) as points in `format`, in input order.
-/// Throws ReadError on malformed input.
+/// Throws ReadError on malformed input, std::invalid_argument when `options` do not apply
+/// to `format` (columns for anything but xy).
+PointFile parse_point_file(std::string_view data, PointFormat format,
+                           const ReadOptions& options = {});
+/// The points alone.
 std::vector<Point2> parse_points(std::string_view data, PointFormat format);
 
 /// Reads `in` to its end and parses it. Throws ReadError on malformed input and
 /// std::runtime_error if the stream fails.
 std::vector<Point2> read_points(std::istream& in, PointFormat format);
+PointFile read_point_file(std::istream& in, PointFormat format, const ReadOptions& options = {});
+
+/// The whole file at `path`, read in one system call per few megabytes. Throws
+/// std::runtime_error "cannot read 'PATH': REASON" with the system's reason (no such
+/// file, permission denied, is a directory).
+std::string read_file(const std::string& path);
 
 /// Writes `points` in `format`, so that parse_points gives the same doubles back
-/// (text coordinates are the shortest decimal that rounds back exactly; node is 0-based
-/// with no attributes or markers).
-void write_points(std::ostream& out, std::span<const Point2> points, PointFormat format);
+/// (text coordinates are the shortest decimal that rounds back exactly; node has no
+/// attributes or markers and numbers its vertices from `index_base`, 0 or 1).
+void write_points(std::ostream& out, std::span<const Point2> points, PointFormat format,
+                  unsigned index_base = 0);
 
 }  // namespace exidel::io

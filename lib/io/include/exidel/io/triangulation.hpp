@@ -9,16 +9,22 @@
 //         halfedges -1 for a boundary half-edge, hull counter-clockwise from the
 //         lexicographically smallest point; for collinear input no triangles and hull the
 //         chain of distinct points) and the input indices that repeat an earlier point.
-//   ele   Triangle's .ele: "ntriangles 3 0", then "t v0 v1 v2" per triangle, t from 0 and
-//         the vertices 0-based input indices. Pair it with a 0-based .node of the input in
-//         input order (write_points with PointFormat::node writes one).
+//   ele   Triangle's .ele: "ntriangles 3 0", then "t v0 v1 v2" per triangle, t and the
+//         vertices (input indices) counted from WriteOptions::index_base, 0 or 1: the
+//         base of the .node the points came from, so the pair stays consistent. Pair it
+//         with a .node of the input in input order (write_points with PointFormat::node
+//         and the same base writes one).
 //   off   OFF: "OFF", "nvertices nfaces 0", every input point as "x y 0" (duplicates
 //         included, so face indices are input indices), then "3 v0 v1 v2" per triangle.
 //   svg   a picture: triangles, the hull drawn thicker, the points as dots; scaled into a
 //         viewBox about 1000 units wide with y flipped so that up is up. For looking at,
-//         not for reading back (coordinates are rounded to 0.001 of the viewBox).
+//         not for reading back (coordinates are rounded to 0.001 of the viewBox). Paths
+//         hold at most svg_path_items triangles (or hull vertices) each: XML parsers cap an
+//         attribute's length (libxml2, under librsvg, at 10 MB), which one path of every
+//         triangle passes near 10^5 points.
 #pragma once
 
+#include <cstddef>
 #include <iosfwd>
 #include <optional>
 #include <span>
@@ -37,10 +43,18 @@ std::optional<TriangulationFormat> triangulation_format_from_name(std::string_vi
 /// From the extension of `path` (.json .ele .off .svg); nullopt for any other.
 std::optional<TriangulationFormat> triangulation_format_from_path(std::string_view path);
 
+struct WriteOptions {
+    unsigned index_base = 0;  // ele: the number of the first vertex and triangle (0 or 1)
+};
+
+/// Triangles (or hull vertices) per SVG path element: about 40 kB of attribute each.
+inline constexpr std::size_t svg_path_items = 1000;
+
 /// Writes `tri`, the triangulation of `points`, in `format`. Only off and svg use the
 /// coordinates.
 void write_triangulation(std::ostream& out, std::span<const Point2> points,
-                         const delaunay::Triangulation& tri, TriangulationFormat format);
+                         const delaunay::Triangulation& tri, TriangulationFormat format,
+                         const WriteOptions& options = {});
 
 /// Parses the json format above (the keys in any order, each exactly once). Fills
 /// triangles, halfedges, hull and duplicates; `collinear` is set iff there are no
@@ -51,5 +65,20 @@ delaunay::Triangulation parse_triangulation_json(std::string_view text);
 /// Rebuilds tri.vertex_of_input (each input index -> its first occurrence) from the
 /// points, so a triangulation read back from json can be certified.
 void fill_vertex_of_input(std::span<const Point2> points, delaunay::Triangulation& tri);
+
+/// A triangulation of `points` from a file, ready for delaunay::certify: every array the
+/// file does not hold is derived from what it holds, so that the certifier judges the
+/// triangles themselves.
+///   json  the layout above; "duplicates" may be absent (delaunator writes none) and is
+///         then derived from the points.
+///   ele   Triangle's .ele ("ntriangles 3 [attributes]", then "t v0 v1 v2 [attributes]",
+///         '#' comments), counted from the first triangle's number (0 or 1, as Triangle
+///         numbers both files); halfedges are linked from the triangles (an edge used
+///         twice in one direction stays unlinked), the hull is the boundary cycle from
+///         the lexicographically smallest boundary vertex (empty when the boundary is not
+///         one cycle), duplicates are derived.
+/// Other formats: std::invalid_argument. Malformed text: ReadError with its line.
+delaunay::Triangulation read_triangulation(std::string_view text, TriangulationFormat format,
+                                           std::span<const Point2> points);
 
 }  // namespace exidel::io

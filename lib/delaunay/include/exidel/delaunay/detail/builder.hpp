@@ -198,7 +198,7 @@ private:
             if (k_.orient2d(pts_[a], pts_[lower], p) != Sign::negative) break;
             lower = a;
             if (++visible >= m_->hull_size) {
-                return fail(FailureKind::hull_walk_exceeded, i, "lower tangent walk");
+                return fail(FailureKind::hull_walk_exceeded, i, "the lower tangent walk passed every hull edge");
             }
         }
         for (;;) {
@@ -207,11 +207,11 @@ private:
             if (k_.orient2d(pts_[upper], pts_[b], p) != Sign::negative) break;
             upper = b;
             if (++visible >= m_->hull_size) {
-                return fail(FailureKind::hull_walk_exceeded, i, "upper tangent walk");
+                return fail(FailureKind::hull_walk_exceeded, i, "the upper tangent walk passed every hull edge");
             }
         }
         if (visible == 0) {
-            return fail(FailureKind::no_visible_edge, i, "both hull edges at the last point");
+            return fail(FailureKind::no_visible_edge, i, "neither hull edge at the last point faces the new point, which lies outside the hull");
         }
 
         // Erosion (Alg. 3 over half-edges). The visible chain lower -> ... -> upper is
@@ -247,7 +247,7 @@ private:
                     this->count(&Counters::eroded_edges);
                     this->count(&Counters::triangles_destroyed);
                     if (++eroded > live) {
-                        return fail(FailureKind::erosion_exceeded, i, "erosion stack");
+                        return fail(FailureKind::erosion_exceeded, i, "the erosion destroyed more triangles than there are");
                     }
                     continue;
                 }

@@ -110,7 +110,8 @@ private:
         return Failure{FailureKind::merge_inconsistent, no_index, no_index,
                        "merge of sorted points [" + std::to_string(L_->first) + ", " +
                            std::to_string(L_->end) + ") and [" + std::to_string(R_->first) +
-                           ", " + std::to_string(R_->end) + "): " + std::move(what)};
+                           ", " + std::to_string(R_->end) + "), at the step '" + std::move(what) +
+                           "', found no consistent merge"};
     }
     bool spend() { return budget_-- > 0; }
 

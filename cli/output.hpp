@@ -1,0 +1,39 @@
+// exidel CLI (internal): output files that appear whole or not at all.
+//
+// A PendingFile is a temporary file next to its destination ("PATH.tmp.XXXXXX"), created
+// when the command starts, so that an unwritable directory is reported before minutes
+// of reading and triangulating, and renamed over PATH by commit() once everything
+// succeeded. It is removed when the command fails, returns early or throws (destructor),
+// and when the process is interrupted by SIGINT, SIGTERM or SIGHUP (a handler that
+// unlinks every pending temporary, then lets the signal end the process as it would
+// have: the exit status still says "killed by signal N").
+#pragma once
+
+#include <iosfwd>
+#include <string>
+
+namespace exidel::cli {
+
+class PendingFile {
+public:
+    /// Creates the temporary file next to `path`. Throws std::runtime_error with the
+    /// system's reason when it cannot ("cannot create a file in 'DIR': Permission denied").
+    explicit PendingFile(std::string path);
+    ~PendingFile();
+    PendingFile(const PendingFile&) = delete;
+    PendingFile& operator=(const PendingFile&) = delete;
+
+    const std::string& path() const noexcept { return path_; }
+
+    /// Opens the temporary file for writing (truncated), binary.
+    std::ofstream open() const;
+    /// Renames the temporary file over path(). Throws std::runtime_error on failure.
+    void commit();
+
+private:
+    std::string path_;
+    std::string temp_;
+    int slot_ = -1;  // its place in the signal handler's list
+};
+
+}  // namespace exidel::cli
