@@ -71,9 +71,11 @@ int run(const std::string& points_path, const std::string& tri_path,
     delaunay::Triangulation tri;
     std::string reading = points_path;
     try {
-        points = io::parse_point_file(io::read_file(points_path), pf, io::ReadOptions{columns}).points;
+        points = io::parse_point_file(io::FileBytes(points_path).view(), pf,
+                                      io::ReadOptions{columns})
+                     .points;
         reading = tri_path;
-        tri = io::read_triangulation(io::read_file(tri_path), *tf, points);
+        tri = io::read_triangulation(io::FileBytes(tri_path).view(), *tf, points);
     } catch (const io::ReadError& e) {
         std::cerr << "exidel: " << reading << ": " << e.what() << '\n';
         return exit_failure;

@@ -349,11 +349,12 @@ int run(const Options& o, const CommandLine& cli) {
     const Clock::time_point read_start = Clock::now();
     io::PointFile input;
     try {
-        const io::ReadOptions read_options{o.columns};
+        const io::ReadOptions read_options{o.columns, o.threads};
         if (from_stdin) {
             input = io::read_point_file(std::cin, input_format, read_options);
         } else {
-            input = io::parse_point_file(io::read_file(*o.input), input_format, read_options);
+            const io::FileBytes bytes(*o.input);
+            input = io::parse_point_file(bytes.view(), input_format, read_options);
         }
     } catch (const std::runtime_error& e) {  // io::ReadError included
         progress.stop();
@@ -423,7 +424,7 @@ int run(const Options& o, const CommandLine& cli) {
     // Write.
     progress.phase("writing");
     const Clock::time_point write_start = Clock::now();
-    const io::WriteOptions write_options{input.index_base};
+    const io::WriteOptions write_options{input.index_base, o.threads};
     const auto write = [&](std::ostream& out) {
         io::write_triangulation(out, points, tri, format, write_options);
     };

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <fstream>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -172,10 +173,48 @@ TEST(ReadXy, ColumnsByNumberAndByName) {
     expect_error("1,2,3\n", PointFormat::xy, 1, "pick two with --columns X,Y");
 }
 
+TEST(ReadXy, ThreadsGiveTheSamePointsAndTheSameErrorLine) {
+    // About 3 MB: three parts of at least 1 MiB each, cut at line ends.
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> u(-1e6, 1e6);
+    std::ostringstream text;
+    text.precision(17);
+    text << "x,y\n";
+    for (int i = 0; i < 90000; ++i) {
+        text << u(rng) << (i % 3 ? " " : ", ") << u(rng) << (i % 1000 == 0 ? "  # c\n\n" : "\n");
+    }
+    const std::string data = text.str();
+    ASSERT_GT(data.size(), 3u << 20);
+    const Points one = parse_point_file(data, PointFormat::xy, ReadOptions{{}, 1}).points;
+    ASSERT_EQ(one.size(), 90000u);
+    for (const unsigned threads : {2u, 3u, 8u}) {
+        EXPECT_TRUE(same_bits(parse_point_file(data, PointFormat::xy, ReadOptions{{}, threads}).points,
+                              one))
+            << threads;
+    }
+    // A bad line late in the input (in the last part) and a second one after it: the
+    // error is the first, at its line in the whole input, whatever the thread count.
+    std::string bad = data;
+    std::size_t line = 0, at = 0;
+    for (std::size_t i = 0; i < bad.size() && line < 79000; ++i) {
+        if (bad[i] == '\n' && ++line == 79000) at = i + 1;
+    }
+    bad.insert(at, "1 2 3\n");
+    bad += "oops\n";
+    for (const unsigned threads : {1u, 2u, 3u}) {
+        try {
+            parse_point_file(bad, PointFormat::xy, ReadOptions{{}, threads});
+            ADD_FAILURE() << "no error";
+        } catch (const ReadError& e) {
+            EXPECT_EQ(e.line(), 79001u) << threads << ": " << e.what();
+        }
+    }
+}
+
 TEST(ReadFile, SaysWhyAFileCannotBeRead) {
     const auto message = [](const std::string& path) {
         try {
-            read_file(path);
+            const FileBytes bytes(path);
         } catch (const std::runtime_error& e) {
             return std::string(e.what());
         }
@@ -185,7 +224,14 @@ TEST(ReadFile, SaysWhyAFileCannotBeRead) {
               "cannot read '/nonexistent/points.xy': No such file or directory");
     EXPECT_EQ(message("/"), "cannot read '/': Is a directory");
     // /proc files report size 0 but have contents: the size is only a hint.
-    EXPECT_FALSE(read_file("/proc/self/status").empty());
+    EXPECT_FALSE(FileBytes("/proc/self/status").view().empty());
+    // A regular file, mapped: the same bytes as written.
+    const std::string path = ::testing::TempDir() + "exidel-filebytes.xy";
+    const std::string text = "1 2\n3 4\n";
+    std::ofstream(path, std::ios::binary) << text;
+    EXPECT_EQ(FileBytes(path).view(), text);
+    std::ofstream(path, std::ios::binary | std::ios::trunc).close();
+    EXPECT_TRUE(FileBytes(path).view().empty());  // empty files are not mapped
 }
 
 TEST(ReadJson, ArrayOfPairs) {

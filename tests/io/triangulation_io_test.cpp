@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -169,6 +170,26 @@ TEST(WriteTriangulation, SvgPathsStayShortForXmlParsers) {
         ++pieces;
     }
     EXPECT_EQ(pieces, 3u);
+}
+
+TEST(WriteTriangulation, JsonIsTheSameWithThreads) {
+    // More numbers than one slice of the parallel writer (2^17) in triangles and halfedges.
+    std::vector<Point2> pts;
+    for (int i = 0; i < 30000; ++i) pts.push_back({std::sin(i * 1.3) * i, std::cos(i * 0.7) * i});
+    const delaunay::Result r = delaunay::triangulate(pts, AdaptiveKernel{});
+    ASSERT_TRUE(r.ok());
+    ASSERT_GT(r.triangulation.triangles.size(), 1u << 17);
+    std::ostringstream one;
+    write_triangulation(one, pts, r.triangulation, TriangulationFormat::json);
+    for (const unsigned threads : {2u, 5u}) {
+        std::ostringstream many;
+        write_triangulation(many, pts, r.triangulation, TriangulationFormat::json,
+                            WriteOptions{0, threads});
+        EXPECT_EQ(many.str(), one.str()) << threads;
+    }
+    const Triangulation back = parse_triangulation_json(one.str());
+    EXPECT_EQ(back.triangles, r.triangulation.triangles);
+    EXPECT_EQ(back.halfedges, r.triangulation.halfedges);
 }
 
 TEST(ParseTriangulationJson, RoundTripAndCertify) {

@@ -42,7 +42,8 @@ ParsedNumber parse_double(std::string_view text) {
     }
     const bool hex = s.size() >= 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X');
     if (hex) s.remove_prefix(2);
-    if (starts_with_ci(s, "nan") || starts_with_ci(s, "inf")) {
+    const char first = s.empty() ? '\0' : static_cast<char>(s.front() | 0x20);  // lower case
+    if ((first == 'n' || first == 'i') && (starts_with_ci(s, "nan") || starts_with_ci(s, "inf"))) {
         return {std::nullopt, quoted(text) + " is not a finite number"};
     }
     // After sign and prefix a number starts with a digit or a point; this also refuses a

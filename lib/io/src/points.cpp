@@ -2,6 +2,7 @@
 #include "exidel/io/points.hpp"
 
 #include <fcntl.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -16,6 +17,7 @@
 #include <istream>
 #include <ostream>
 
+#include "exidel/delaunay/parallel.hpp"
 #include "exidel/io/number.hpp"
 #include "json.hpp"
 #include "text.hpp"
@@ -118,51 +120,120 @@ std::size_t column_index(const std::string& column, std::span<const std::string_
     return static_cast<std::size_t>(found - header.begin());
 }
 
-std::vector<Point2> parse_xy(std::string_view data, const std::optional<Columns>& columns) {
-    std::vector<Point2> points;
-    // About 20 bytes per line in typical files: one allocation instead of log2(n) regrowths.
-    points.reserve(data.size() / 24);
+// Where x and y are on an xy line, decided by its first line with content.
+struct XyLayout {
+    std::size_t width = 2, ix = 0, iy = 1;  // fields per line, and which are x and y
+    bool columns = false;                   // chosen by ReadOptions::columns
+};
+
+// Parses the data lines of `data` (line numbers counted from 1) into `points`.
+void parse_xy_lines(std::string_view data, const XyLayout& layout, std::vector<Point2>& points) {
     std::vector<std::string_view> fields;
     std::string error;
-    bool first_content = true;
-    std::size_t width = 2, ix = 0, iy = 1;  // fields per line, and which are x and y
     for_each_line(data, [&](std::size_t number, std::string_view line) {
-        if (!split_fields(strip_comment(line), fields, error, true, columns.has_value())) {
+        if (!split_fields(strip_comment(line), fields, error, true, layout.columns)) {
             throw ReadError::at_line(number, error);
         }
         if (fields.empty()) return;
-        if (first_content) {
-            first_content = false;
+        if (fields.size() != layout.width) {
+            throw ReadError::at_line(
+                number, layout.columns ? "expected " + std::to_string(layout.width) +
+                                             " fields, as on the first line, got " +
+                                             std::to_string(fields.size())
+                                       : "expected 2 coordinates (x y), got " +
+                                             std::to_string(fields.size()) +
+                                             (fields.size() > 2
+                                                  ? " fields (pick two with --columns X,Y)"
+                                                  : ""));
+        }
+        points.push_back({coordinate(number, fields[layout.ix], "x"),
+                          coordinate(number, fields[layout.iy], "y")});
+    });
+}
+
+std::vector<Point2> parse_xy(std::string_view data, const std::optional<Columns>& columns,
+                             unsigned threads) {
+    // The first line with content: a header or not, and the layout of every line.
+    XyLayout layout;
+    layout.columns = columns.has_value();
+    std::size_t first = 0, lines_before = 0;  // where the data lines start, and their line
+    {
+        std::vector<std::string_view> fields;
+        std::string error;
+        while (first < data.size()) {
+            std::size_t end = data.find('\n', first);
+            if (end == std::string_view::npos) end = data.size();
+            std::string_view line = data.substr(first, end - first);
+            if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+            const std::size_t number = lines_before + 1;
+            if (!split_fields(strip_comment(line), fields, error, true, layout.columns)) {
+                throw ReadError::at_line(number, error);
+            }
+            if (fields.empty()) {
+                first = end + 1;
+                ++lines_before;
+                continue;
+            }
+            bool header = false;
             if (columns) {
-                // A header when the picked fields are names (by number), or always when a
-                // column is picked by name.
-                width = fields.size();
+                // A header when a column is picked by name, or when the picked fields are
+                // names (by number).
+                layout.width = fields.size();
                 const bool by_name = !std::isdigit(static_cast<unsigned char>(columns->x[0])) ||
                                      !std::isdigit(static_cast<unsigned char>(columns->y[0]));
-                ix = column_index(columns->x, fields, number);
-                iy = column_index(columns->y, fields, number);
-                if (std::max(ix, iy) >= width) {
-                    throw ReadError::at_line(number, "column " + std::to_string(std::max(ix, iy) + 1) +
-                                                         " asked for, the line has " +
-                                                         std::to_string(width) + " fields");
+                layout.ix = column_index(columns->x, fields, number);
+                layout.iy = column_index(columns->y, fields, number);
+                if (std::max(layout.ix, layout.iy) >= layout.width) {
+                    throw ReadError::at_line(
+                        number, "column " + std::to_string(std::max(layout.ix, layout.iy) + 1) +
+                                    " asked for, the line has " + std::to_string(layout.width) +
+                                    " fields");
                 }
-                if (by_name || (is_name(fields[ix]) && is_name(fields[iy]))) return;
-            } else if (fields.size() == 2 && is_name(fields[0]) && is_name(fields[1])) {
-                return;
+                header = by_name || (is_name(fields[layout.ix]) && is_name(fields[layout.iy]));
+            } else {
+                header = fields.size() == 2 && is_name(fields[0]) && is_name(fields[1]);
             }
+            if (header) {
+                first = std::min(end + 1, data.size());
+                ++lines_before;
+            }
+            break;
         }
-        if (fields.size() != width) {
-            throw ReadError::at_line(
-                number, columns ? "expected " + std::to_string(width) +
-                                      " fields, as on the first line, got " +
-                                      std::to_string(fields.size())
-                                : "expected 2 coordinates (x y), got " +
-                                      std::to_string(fields.size()) +
-                                      (fields.size() > 2 ? " fields (pick two with --columns X,Y)"
-                                                         : ""));
+    }
+    const std::string_view rest = data.substr(std::min(first, data.size()));
+
+    // The rest in parts cut at line ends, one vector each; about 20 bytes per line.
+    constexpr std::size_t min_part = 1 << 20;
+    const std::size_t parts = std::clamp<std::size_t>(rest.size() / min_part, 1, std::max(threads, 1u));
+    std::vector<std::size_t> cut(parts + 1, rest.size());
+    cut[0] = 0;
+    for (std::size_t p = 1; p < parts; ++p) {
+        const std::size_t nl = rest.find('\n', std::max(cut[p - 1], p * (rest.size() / parts)));
+        cut[p] = nl == std::string_view::npos ? rest.size() : nl + 1;
+    }
+    std::vector<std::vector<Point2>> part_points(parts);
+    std::vector<std::optional<ReadError>> part_error(parts);
+    exidel::parallel_for(parts, threads, [&](std::size_t p) {
+        part_points[p].reserve((cut[p + 1] - cut[p]) / 24);
+        try {
+            parse_xy_lines(rest.substr(cut[p], cut[p + 1] - cut[p]), layout, part_points[p]);
+        } catch (const ReadError& e) {
+            part_error[p] = e;
         }
-        points.push_back({coordinate(number, fields[ix], "x"), coordinate(number, fields[iy], "y")});
     });
+    // The first error in input order, at its line in the whole input.
+    for (std::size_t p = 0; p < parts; ++p) {
+        if (!part_error[p]) continue;
+        const std::size_t before =
+            lines_before + static_cast<std::size_t>(std::count(rest.begin(), rest.begin() + static_cast<std::ptrdiff_t>(cut[p]), '\n'));
+        throw ReadError::at_line(before + part_error[p]->line(), part_error[p]->reason());
+    }
+    if (parts == 1) return std::move(part_points[0]);
+    std::size_t total = 0;
+    for (const auto& v : part_points) total += v.size();
+    std::vector<Point2> points;
+    points.reserve(total);
+    for (const auto& v : part_points) points.insert(points.end(), v.begin(), v.end());
     return points;
 }
 
@@ -381,7 +452,7 @@ PointFile parse_point_file(std::string_view data, PointFormat format, const Read
     constexpr std::string_view bom = "\xEF\xBB\xBF";
     if (format != PointFormat::f64 && data.starts_with(bom)) data.remove_prefix(bom.size());
     switch (format) {
-        case PointFormat::xy: return {parse_xy(data, options.columns), 0};
+        case PointFormat::xy: return {parse_xy(data, options.columns, options.threads), 0};
         case PointFormat::json: return {parse_json(data), 0};
         case PointFormat::node: return parse_node(data);
         case PointFormat::f64: return {parse_f64(data), 0};
@@ -407,7 +478,7 @@ std::vector<Point2> read_points(std::istream& in, PointFormat format) {
     return read_point_file(in, format).points;
 }
 
-std::string read_file(const std::string& path) {
+FileBytes::FileBytes(const std::string& path) {
     const auto fail = [&](int error) {
         throw std::runtime_error("cannot read '" + path + "': " + std::strerror(error));
     };
@@ -420,13 +491,23 @@ std::string read_file(const std::string& path) {
     struct stat st {};
     if (::fstat(fd, &st) != 0) fail(errno);
     if (S_ISDIR(st.st_mode)) fail(EISDIR);
-    // The size is a hint (a pipe or /proc file says 0): read until the end either way.
-    std::string data;
-    data.resize(S_ISREG(st.st_mode) ? static_cast<std::size_t>(st.st_size) + 1 : 1 << 16);
+    if (S_ISREG(st.st_mode) && st.st_size > 0) {
+        map_size_ = static_cast<std::size_t>(st.st_size);
+        // MAP_POPULATE: the pages are mapped in one go instead of one fault each.
+        void* map = ::mmap(nullptr, map_size_, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
+        if (map != MAP_FAILED) {
+            map_ = map;
+            view_ = std::string_view(static_cast<const char*>(map_), map_size_);
+            return;
+        }
+        map_size_ = 0;  // not mappable (some file systems): read it instead
+    }
+    // Read until the end: the size is at most a hint (a pipe or /proc file says 0).
+    copy_.resize(1 << 16);
     std::size_t used = 0;
     for (;;) {
-        if (used == data.size()) data.resize(2 * data.size());
-        const ::ssize_t got = ::read(fd, data.data() + used, data.size() - used);
+        if (used == copy_.size()) copy_.resize(2 * copy_.size());
+        const ::ssize_t got = ::read(fd, copy_.data() + used, copy_.size() - used);
         if (got < 0) {
             if (errno == EINTR) continue;
             fail(errno);
@@ -434,8 +515,12 @@ std::string read_file(const std::string& path) {
         if (got == 0) break;
         used += static_cast<std::size_t>(got);
     }
-    data.resize(used);
-    return data;
+    copy_.resize(used);
+    view_ = copy_;
+}
+
+FileBytes::~FileBytes() {
+    if (map_) ::munmap(map_, map_size_);
 }
 
 void write_points(std::ostream& out, std::span<const Point2> points, PointFormat format,

@@ -8,9 +8,10 @@
 
 namespace exidel::io::detail {
 
-inline constexpr std::string_view blanks = " \t\r\v\f";
 
-inline bool is_blank(char c) { return blanks.find(c) != std::string_view::npos; }
+// Called for every character of a text file: comparisons, not blanks.find(c) (a memchr
+// call per character was 40% of parsing an xy file).
+inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
 /// Calls f(line_number, line) for every line of `data` (split at '\n', a trailing '\r'
 /// removed, line numbers from 1). A final line without '\n' counts; an empty tail does not.

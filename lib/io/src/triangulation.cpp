@@ -6,12 +6,14 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <numeric>
 #include <ostream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "exidel/delaunay/parallel.hpp"
 #include "json.hpp"
 #include "text.hpp"
 
@@ -22,31 +24,54 @@ namespace {
 using delaunay::Triangulation;
 using detail::NumberWriter;
 
+// Formats v[begin, end) as comma-separated integers (a comma before each but the first
+// of the whole array) into `text`, which has room for 12 characters per number
+// ("-2147483648," or "4294967295," at most); returns the length.
 template <class T>
-void json_array(NumberWriter& w, const std::vector<T>& v) {
-    w.text("[");
-    for (std::size_t i = 0; i < v.size(); ++i) {
-        if (i) w.text(",");
-        if constexpr (std::is_signed_v<T>) {
-            w.number(static_cast<std::int64_t>(v[i]));
-        } else {
-            w.number(static_cast<std::uint64_t>(v[i]));
-        }
+std::size_t format_integers(const std::vector<T>& v, std::size_t begin, std::size_t end, char* text) {
+    char* p = text;
+    for (std::size_t i = begin; i < end; ++i) {
+        if (i) *p++ = ',';
+        p = std::to_chars(p, text + 12 * (end - begin), v[i]).ptr;
     }
-    w.text("]");
+    return static_cast<std::size_t>(p - text);
 }
 
-void write_json(std::ostream& out, const Triangulation& tri) {
-    NumberWriter w(out);
-    w.text("{\"triangles\": ");
-    json_array(w, tri.triangles);
-    w.text(",\n \"halfedges\": ");
-    json_array(w, tri.halfedges);
-    w.text(",\n \"hull\": ");
-    json_array(w, tri.hull);
-    w.text(",\n \"duplicates\": ");
-    json_array(w, tri.duplicates);
-    w.text("}\n");
+// "[v0,v1,...]": formatted in slices, `threads` slices at a time, written in order. The
+// formatting is most of a large file's write time; the slices keep memory bounded. The
+// buffers are not std::string: resizing one zero-fills it, a pass as long as the writing.
+template <class T>
+void json_array(std::ostream& out, const std::vector<T>& v, unsigned threads) {
+    constexpr std::size_t slice = 1 << 17;  // numbers per slice: about 1 MB of text
+    const std::size_t workers = std::max(threads, 1u);
+    const std::size_t buffers = std::min(workers, (v.size() + slice - 1) / slice);
+    std::vector<std::unique_ptr<char[]>> text(buffers);
+    for (auto& t : text) t.reset(new char[12 * slice]);
+    std::vector<std::size_t> length(buffers);
+    out.put('[');
+    for (std::size_t round = 0; round < v.size(); round += slice * workers) {
+        const std::size_t slices = std::min(workers, (v.size() - round + slice - 1) / slice);
+        exidel::parallel_for(slices, threads, [&](std::size_t s) {
+            const std::size_t begin = round + s * slice;
+            length[s] = format_integers(v, begin, std::min(v.size(), begin + slice), text[s].get());
+        });
+        for (std::size_t s = 0; s < slices; ++s) {
+            out.write(text[s].get(), static_cast<std::streamsize>(length[s]));
+        }
+    }
+    out.put(']');
+}
+
+void write_json(std::ostream& out, const Triangulation& tri, unsigned threads) {
+    out << "{\"triangles\": ";
+    json_array(out, tri.triangles, threads);
+    out << ",\n \"halfedges\": ";
+    json_array(out, tri.halfedges, threads);
+    out << ",\n \"hull\": ";
+    json_array(out, tri.hull, threads);
+    out << ",\n \"duplicates\": ";
+    json_array(out, tri.duplicates, threads);
+    out << "}\n";
 }
 
 void write_ele(std::ostream& out, const Triangulation& tri, std::uint64_t base) {
@@ -358,7 +383,7 @@ void write_triangulation(std::ostream& out, std::span<const Point2> points,
                          const Triangulation& tri, TriangulationFormat format,
                          const WriteOptions& options) {
     switch (format) {
-        case TriangulationFormat::json: return write_json(out, tri);
+        case TriangulationFormat::json: return write_json(out, tri, options.threads);
         case TriangulationFormat::ele: return write_ele(out, tri, options.index_base);
         case TriangulationFormat::off: return write_off(out, points, tri);
         case TriangulationFormat::svg: return write_svg(out, points, tri);

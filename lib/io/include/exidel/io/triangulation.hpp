@@ -45,6 +45,8 @@ std::optional<TriangulationFormat> triangulation_format_from_path(std::string_vi
 
 struct WriteOptions {
     unsigned index_base = 0;  // ele: the number of the first vertex and triangle (0 or 1)
+    /// json: threads that format parts of the arrays at once (the text is the same).
+    unsigned threads = 1;
 };
 
 /// Triangles (or hull vertices) per SVG path element: about 40 kB of attribute each.
