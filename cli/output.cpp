@@ -61,6 +61,16 @@ std::string directory_of(const std::string& path) {
 }  // namespace
 
 PendingFile::PendingFile(std::string path) : path_(std::move(path)), temp_(path_ + ".tmp.XXXXXX") {
+    // A device or a pipe (/dev/null, /dev/stdout, a FIFO) is written in place: renaming a
+    // temporary over it would replace /dev/null with a regular file.
+    struct stat st {};
+    if (::stat(path_.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
+        if (S_ISDIR(st.st_mode)) {
+            throw std::runtime_error("cannot write '" + path_ + "': " + std::strerror(EISDIR));
+        }
+        temp_ = path_;
+        return;
+    }
     if (temp_.size() >= max_path) throw std::runtime_error("output path too long: '" + path_ + "'");
     install_handlers();
     {
@@ -111,6 +121,7 @@ std::ofstream PendingFile::open() const {
 }
 
 void PendingFile::commit() {
+    if (temp_ == path_) return;  // written in place
     if (slot_ < 0) throw std::logic_error("PendingFile: committed twice");
     if (std::rename(temp_.c_str(), path_.c_str()) != 0) {
         throw std::runtime_error("cannot rename the temporary file to '" + path_ +

@@ -6,7 +6,9 @@
 // succeeded. It is removed when the command fails, returns early or throws (destructor),
 // and when the process is interrupted by SIGINT, SIGTERM or SIGHUP (a handler that
 // unlinks every pending temporary, then lets the signal end the process as it would
-// have: the exit status still says "killed by signal N").
+// have: the exit status still says "killed by signal N"). A path that exists and is not a
+// regular file (/dev/null, a FIFO) is written directly: it has no partial state to hide,
+// and a rename would replace the device with a file.
 #pragma once
 
 #include <iosfwd>

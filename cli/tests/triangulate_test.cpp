@@ -654,4 +654,22 @@ TEST(ExidelTriangulate, LargeSvgOpensInLibrsvg) {
 #endif
 }
 
+// A FIFO (like /dev/null or /dev/stdout, not a regular file) is written in place: the
+// temporary-and-rename of regular files would replace it with a file.
+TEST(ExidelTriangulate, DevicesAndPipesAreWrittenInPlace) {
+    const std::string fifo = work_path("out-fifo"), captured = work_path("fifo.captured");
+    std::remove(fifo.c_str());
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
+    const std::string in = in_any();
+    // The reader gives up after 20 s, in case exidel never opens the pipe.
+    const std::string command = "timeout 20 cat '" + fifo + "' > '" + captured + "' & '" + EXIDEL_CLI_PATH +
+                                "' triangulate -i '" + in + "' -o '" + fifo + "'; s=$?; wait; exit $s";
+    EXPECT_EQ(std::system(command.c_str()), 0);
+    struct stat st {};
+    ASSERT_EQ(::stat(fifo.c_str(), &st), 0);
+    EXPECT_TRUE(S_ISFIFO(st.st_mode));
+    EXPECT_EQ(slurp(captured), run("-i " + in).out);
+    EXPECT_EQ(run("-i " + in + " -o " + work_path("")).status, 1);  // a directory: an error
+}
+
 }  // namespace
