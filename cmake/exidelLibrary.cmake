@@ -15,5 +15,12 @@ function(exidel_add_library name)
     $<INSTALL_INTERFACE:include>)
   target_compile_features(${target} PUBLIC cxx_std_20)
   target_compile_options(${target} PRIVATE -ffp-contract=off -fno-fast-math)
+  # With BUILD_SHARED_LIBS: libexidel_<name>.so.0.1.0, SONAME libexidel_<name>.so.0.1.
+  # While the major version is 0, every minor release may change the ABI (the templates'
+  # explicit instantiations and every struct are part of it), so the SONAME carries the
+  # minor version too. Static libraries ignore both properties.
+  set_target_properties(${target} PROPERTIES
+    VERSION ${exidel_VERSION}
+    SOVERSION ${exidel_VERSION_MAJOR}.${exidel_VERSION_MINOR})
   exidel_warnings(${target})
 endfunction()
