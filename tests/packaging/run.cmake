@@ -21,15 +21,7 @@ file(MAKE_DIRECTORY ${WORK_DIR})
 set(common_args -G ${CMAKE_GENERATOR} -DCMAKE_BUILD_TYPE=Release
     -DCMAKE_CXX_COMPILER=${CXX_COMPILER})
 
-# run(<what> <command>...): run a step, fail the test with its output if it fails.
-function(run what)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "${what} failed (exit ${rc}):\n${out}")
-  endif()
-  message(STATUS "${what}: ok")
-  set(last_output "${out}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/common.cmake)  # run()
 
 if(MODE STREQUAL "install")
   set(prefix ${WORK_DIR}/prefix)
