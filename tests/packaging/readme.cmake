@@ -8,8 +8,9 @@
 #         -DCMAKE_GENERATOR=... -DCXX_COMPILER=... -P readme.cmake
 #
 # static: PREFIX is the install tree packaging.find_package leaves behind (its fixture), so
-#         exidel is not built once more. The program is built with CMake, with CMake and
-#         -ffast-math -O3 -march=native as its own flags, and with README's pkg-config line.
+#         exidel is not built once more. The program is built with CMake (-Wall -Wextra
+#         -Wpedantic -Werror), with CMake and -ffast-math -O3 -march=native as its own
+#         flags, and with README's pkg-config line.
 # shared: builds and installs exidel's libraries with BUILD_SHARED_LIBS=ON, checks their
 #         SONAME, RUNPATH and that the floating-point hygiene flags stayed PRIVATE, then
 #         builds the program against them with -ffast-math -O3 -march=native.
@@ -117,8 +118,10 @@ if(MODE STREQUAL "static")
   endif()
   check_no_hygiene_flags_exported(${PREFIX})
 
-  user_project(cmake ${PREFIX} "")
-  check_output("README program (CMake)" ${app})
+  # With the project's warning set as errors: README's program, and every installed
+  # header it includes, compile warning-free in a consumer's build.
+  user_project(cmake ${PREFIX} "-Wall -Wextra -Wpedantic -Werror")
+  check_output("README program (CMake, warnings as errors)" ${app})
   user_project(cmake-fast-math ${PREFIX} "${user_flags}")
   check_output("README program (CMake, ${user_flags})" ${app})
 
