@@ -40,7 +40,8 @@ if(MODE STREQUAL "install")
                ${cmakedir}/exidelFindNumerics.cmake
                ${cmakedir}/exidel-predicates-targets.cmake
                ${prefix}/include/exidel/predicates/all.hpp
-               ${prefix}/include/exidel/predicates/kernel.hpp)
+               ${prefix}/include/exidel/predicates/kernel.hpp
+               ${prefix}/lib/pkgconfig/exidel.pc)
     if(NOT EXISTS ${file})
       message(FATAL_ERROR "installed package lacks ${file}")
     endif()
