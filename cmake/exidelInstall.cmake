@@ -98,3 +98,46 @@ function(exidel_install_finalize)
   install(FILES ${build_dir}/exidelConfig.cmake ${build_dir}/exidelConfigVersion.cmake
           DESTINATION ${EXIDEL_INSTALL_CMAKEDIR})
 endfunction()
+
+# exidel_install_pkgconfig(<target>...): installs <libdir>/pkgconfig/exidel.pc, whose
+# Libs name the targets in the order given (a library before the ones it uses, as a static
+# link needs). GMP and MPFR come from their own .pc files (Debian ships gmp.pc and mpfr.pc).
+function(exidel_install_pkgconfig)
+  set(libs "")
+  foreach(target IN LISTS ARGN)
+    get_target_property(name ${target} OUTPUT_NAME)
+    if(NOT name)
+      set(name ${target})
+    endif()
+    string(APPEND libs " -l${name}")
+  endforeach()
+  set(EXIDEL_PC_LIBS "${libs}")
+  # A static exidel_predicates leaves GMP and MPFR to the final link, so every consumer
+  # needs them: Requires. A shared one carries them as its own dependencies: Requires.private,
+  # needed only by `pkg-config --static`.
+  get_target_property(type exidel_predicates TYPE)
+  if(type STREQUAL "STATIC_LIBRARY")
+    set(EXIDEL_PC_REQUIRES "Requires: gmp mpfr")
+  else()
+    set(EXIDEL_PC_REQUIRES "Requires.private: gmp mpfr")
+  endif()
+  set(pcdir ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+  # Paths relative to the prefix unless the install directories were given as absolute.
+  foreach(kind LIBDIR INCLUDEDIR)
+    if(IS_ABSOLUTE "${CMAKE_INSTALL_${kind}}")
+      set(EXIDEL_PC_${kind} "${CMAKE_INSTALL_${kind}}")
+    else()
+      set(EXIDEL_PC_${kind} "\${prefix}/${CMAKE_INSTALL_${kind}}")
+    endif()
+  endforeach()
+  if(IS_ABSOLUTE "${pcdir}")
+    set(EXIDEL_PC_PREFIX "${CMAKE_INSTALL_PREFIX}")
+  else()
+    file(RELATIVE_PATH up /exidel-prefix/${pcdir} /exidel-prefix)
+    string(REGEX REPLACE "/$" "" up "${up}")
+    set(EXIDEL_PC_PREFIX "\${pcfiledir}/${up}")
+  endif()
+  set(output ${PROJECT_BINARY_DIR}/exidel-package/exidel.pc)
+  configure_file(${PROJECT_SOURCE_DIR}/cmake/exidel.pc.in ${output} @ONLY)
+  install(FILES ${output} DESTINATION ${pcdir})
+endfunction()
