@@ -629,6 +629,27 @@ std::pair<std::string, int> without_lines(const std::string& text, std::string_v
     return {kept, dropped};
 }
 
+/// Every file of `a` and `b` is in both and the same, reports but for their one timing
+/// line; counts the reports.
+void expect_same_files(const std::map<std::string, std::string>& a, const std::map<std::string, std::string>& b,
+                       std::size_t& reports) {
+    for (const auto& [name, bytes] : b) EXPECT_TRUE(a.count(name)) << name << " appeared in the rerun only";
+    for (const auto& [name, bytes] : a) {
+        ASSERT_TRUE(b.count(name)) << name << " is missing from the rerun";
+        if (fs::path(name).filename() == "report.md") {
+            ++reports;
+            const auto [kept_a, timing_a] = without_lines(bytes, timing_prefix);
+            const auto [kept_b, timing_b] = without_lines(b.at(name), timing_prefix);
+            EXPECT_EQ(timing_a, 1) << name << ": one timing line, the only one that may differ";
+            EXPECT_EQ(timing_b, 1) << name;
+            EXPECT_EQ(kept_a, kept_b) << name << " differs from its rerun beyond the timing line";
+            EXPECT_NE(bytes.find("commit `"), std::string::npos) << name << ": no build facts";
+        } else {
+            EXPECT_EQ(bytes, b.at(name)) << name << " differs from its rerun";
+        }
+    }
+}
+
 // The promise of every report: the command on its rerun line writes the same files again.
 // The quick study runs once (two threads), then its own rerun line runs verbatim from
 // another folder (one thread: --jobs is not on the line, and must not matter): every file
@@ -652,25 +673,25 @@ TEST(Reproducibility, TheReportsRerunLineWritesTheSameFilesAgain) {
 
     const auto a = snapshot(first / "out"), b = snapshot(second / "out");
     ASSERT_FALSE(a.empty());
-    for (const auto& [name, bytes] : b) EXPECT_TRUE(a.count(name)) << name << " appeared in the rerun only";
     std::size_t reports = 0, pictures = 0;
-    for (const auto& [name, bytes] : a) {
-        ASSERT_TRUE(b.count(name)) << name << " is missing from the rerun";
-        if (fs::path(name).filename() == "report.md") {
-            ++reports;
-            const auto [kept_a, timing_a] = without_lines(bytes, timing_prefix);
-            const auto [kept_b, timing_b] = without_lines(b.at(name), timing_prefix);
-            EXPECT_EQ(timing_a, 1) << name << ": one timing line, the only one that may differ";
-            EXPECT_EQ(timing_b, 1) << name;
-            EXPECT_EQ(kept_a, kept_b) << name << " differs from its rerun beyond the timing line";
-            EXPECT_NE(bytes.find("commit `"), std::string::npos) << name << ": no build facts";
-        } else {
-            EXPECT_EQ(bytes, b.at(name)) << name << " differs from its rerun";
-        }
-        pictures += name.ends_with(".png");
-    }
+    expect_same_files(a, b, reports);
+    for (const auto& [name, bytes] : a) pictures += name.ends_with(".png");
     EXPECT_EQ(reports, 5u);
     EXPECT_GT(pictures, 1u);
+
+    // Each study's own report names the command that writes its folder alone: the study
+    // with the defaults `all` ran it with. Run for the two quick ones.
+    const fs::path third = work_dir("rerun_third");
+    for (const std::string study : {"failure-map", "precision", "triangulation", "stages"}) {
+        const std::string line = line_after(read_file(first / "out" / study / "report.md"), std::string(rerun_prefix));
+        const std::string own = line.substr(0, line.find('`'));
+        EXPECT_EQ(own, "exidel study " + study + " --quick --seed 20250704 --out out/" + study);
+        if (study != "failure-map" && study != "precision") continue;
+        ASSERT_EQ(run_in(third, exidel + own.substr(6)), 0) << own;
+        std::size_t one = 0;
+        expect_same_files(snapshot(first / "out" / study), snapshot(third / "out" / study), one);
+        EXPECT_EQ(one, 1u);
+    }
 
     // No picture twice: neither the same file bytes, nor (titles aside) the same panels.
     const FailureMapLayout layout = failure_map_layout(256, 256);
