@@ -22,7 +22,8 @@ namespace {
 constexpr std::string_view study_help_head =
     R"(usage: exidel study <study> [--out DIR] [--seed N] [--jobs N] [--quick] [options]
 
-Studies (each writes report.md, CSVs and pictures into DIR and prints its main table):
+Studies (each writes report.md, CSVs and pictures into DIR and prints its main table;
+report.md starts with the command that writes the same files again):
   failure-map    one predicate while one point moves over a grid of ulp steps
                  (Kettner et al. 2008): a PNG per preset and kernel, sign counts
   precision      wrong-sign rate of MPFR at p bits vs the exact kernel, per
@@ -32,7 +33,8 @@ Studies (each writes report.md, CSVs and pictures into DIR and prints its main t
                  the work (flips, predicate calls) of each insertion order
   stages         which stage of the adaptive kernel decides, on query streams and
                  inside triangulations
-  all            the four above into DIR/<study>/ and DIR/report.md
+  all            the four above into DIR/<study>/ and DIR/report.md, each with its
+                 defaults (so `all` takes only the common options below)
   replay         classify one point file as the triangulation study would:
                  exidel study replay -i FILE --kernel K [--incircle determinant|cosine]
                                      [--algorithm NAME] [--order lexicographic|radial|strips]

@@ -327,7 +327,9 @@ StagesStudy run_stages_study(const StagesOptions& options, const RunOptions& run
 // =================================================================================
 
 /// All four studies with the quick (or default) presets, each in its own subfolder of
-/// run.out, and run.out/report.md embedding the four reports.
+/// run.out, and run.out/report.md embedding the four reports. Every report starts with the
+/// command that writes its files again (run.command is not used: `study all` takes only
+/// the common options, so the command follows from them) and what built and ran it.
 void run_all_studies(const RunOptions& run);
 
 /// One sentence defining a family: its configuration, ulp offsets and exponent range, as
