@@ -210,8 +210,8 @@ Report run_header(const RunOptions& run) {
         r.standalone_paragraph(
             "This command carries every option that changes a result (--jobs changes none). "
             "Run with the build and on the machine below, it writes these files again byte for "
-            "byte, all but the timing line; the long-double and MPFR results may differ "
-            "with another compiler, flags, library versions or CPU.");
+            "byte, all but the timing line. Another build or machine may compute other results, "
+            "the long-double kernel's above all: they depend on the long-double format below.");
     }
     const BuildInfo& b = build_info();
     std::string kernels;
