@@ -22,7 +22,8 @@ namespace {
 constexpr std::string_view study_help_head =
     R"(usage: exidel study <study> [--out DIR] [--seed N] [--jobs N] [--quick] [options]
 
-Studies (each writes report.md, CSVs and pictures into DIR and prints its main table):
+Studies (each writes report.md, CSVs and pictures into DIR and prints its main table;
+report.md starts with the command that writes the same files again):
   failure-map    one predicate while one point moves over a grid of ulp steps
                  (Kettner et al. 2008): a PNG per preset and kernel, sign counts
   precision      wrong-sign rate of MPFR at p bits vs the exact kernel, per
@@ -32,7 +33,8 @@ Studies (each writes report.md, CSVs and pictures into DIR and prints its main t
                  the work (flips, predicate calls) of each insertion order
   stages         which stage of the adaptive kernel decides, on query streams and
                  inside triangulations
-  all            the four above into DIR/<study>/ and DIR/report.md
+  all            the four above into DIR/<study>/ and DIR/report.md, each with its
+                 defaults (so `all` takes only the common options below)
   replay         classify one point file as the triangulation study would:
                  exidel study replay -i FILE --kernel K [--incircle determinant|cosine]
                                      [--algorithm NAME] [--order lexicographic|radial|strips]
@@ -49,7 +51,7 @@ Common options:
 
 failure-map:
   --preset LIST   comma-separated preset names, or 'all' (default: all presets;
-                  --quick: kettner1-3, incircle-s12, cosine-s12); --list-presets
+                  --quick: kettner1-3, incircle-s2, cosine-s2); --list-presets
   --kernel LIST   comma-separated kernel names (listed at the end)
                   (default: double,long-double,mpfr:106,adaptive,exact)
   --width W, --height H   window in cells (default 256 x 256)
@@ -238,12 +240,51 @@ research::FailureMapOptions failure_map_options(const Parsed& p) {
     return o;
 }
 
-// Announces the study, runs it, writes its report and prints its main table and where
+/// The command line that reproduces a study's files: the study, then every option given
+/// that changes a result, in one fixed order, with --seed always (its default may change)
+/// and --out. --jobs, --no-progress and --list-presets change no file and are left out.
+std::string rerun_command(const Parsed& p) {
+    using research::shell_quote;
+    std::string c = "exidel study " + p.study;
+    if (p.run.quick) c += " --quick";
+    c += " --seed " + std::to_string(p.run.seed);
+    const auto text = [&c](std::string_view name, const std::optional<std::string>& v) {
+        if (v) c += " " + std::string(name) + " " + shell_quote(*v);
+    };
+    const auto number = [&c](std::string_view name, const std::optional<std::uint64_t>& v) {
+        if (v) c += " " + std::string(name) + " " + std::to_string(*v);
+    };
+    text("--preset", p.presets);
+    text("--kernel", p.kernels);
+    text("--predicate", p.predicate);
+    text("--points", p.points);
+    text("--move", p.move);
+    text("--order", p.order);
+    number("--step", p.step);
+    if (p.centered) c += " --centered";
+    number("--width", p.width);
+    number("--height", p.height);
+    text("--algorithm", p.algorithms);
+    text("--families", p.families);
+    text("--bits", p.bits);
+    number("--samples", p.samples);
+    number("--seeds", p.seeds);
+    text("--sizes", p.sizes);
+    number("--shrink", p.shrink);
+    number("--size", p.size);
+    return c + " --out " + shell_quote(p.run.out.string());
+}
+
+// Announces the study, runs it, writes its report (headed by the command that reproduces
+// it, what built and ran it, and the run's timing) and prints its main table and where
 // the report is.
 template <class StudyOptions, class Run, class Seconds>
 void run_and_report(const Parsed& p, const StudyOptions& o, Run run, Seconds seconds) {
     std::cout << p.study << ": seed " << p.run.seed << ", output " << p.run.out.string() << '\n';
-    const auto r = run(o, p.run);
+    auto r = run(o, p.run);
+    research::Report header = research::run_header(p.run);
+    header.paragraph(research::timing_line(seconds(), p.run));
+    r.report.prepend(header);
     research::write_text_file(p.run.out / "report.md", r.report.render());
     std::cout << r.table.text();
     std::printf("\nreport: %s  (%.1f s)\n", (p.run.out / "report.md").c_str(), seconds());
@@ -263,6 +304,7 @@ int study_command(std::span<const std::string_view> args) {
     if (const std::optional<int> status = cli.parse(args.subspan(1))) return *status;
     if (!p.out_given) p.run.out = p.study == "all" ? "exidel-study" : "exidel-study/" + p.study;
     p.run.log = &std::cout;
+    p.run.command = rerun_command(p);
     const auto start = std::chrono::steady_clock::now();
     const auto seconds = [&] {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -303,6 +345,14 @@ int study_command(std::span<const std::string_view> args) {
             if (p.size) o.size = *p.size;
             run_and_report(p, o, run_stages_study, seconds);
         } else if (p.study == "all") {
+            // `all` runs every study with its defaults: an option of one study would be
+            // silently ignored, and its report's rerun line would not show it.
+            if (p.presets || p.kernels || p.predicate || p.points || p.move || p.order || p.families ||
+                p.bits || p.sizes || p.input || p.incircle || p.algorithms || p.width || p.height ||
+                p.step || p.samples || p.seeds || p.size || p.shrink || p.centered || p.list_presets) {
+                return cli.usage_error("study all takes only --out, --seed, --jobs, --quick and "
+                                       "--no-progress; give a study's own options to that study");
+            }
             run_all_studies(p.run);
             std::printf("\nall studies done in %.1f s; report: %s\n", seconds(), (p.run.out / "report.md").c_str());
         } else if (p.study == "replay") {

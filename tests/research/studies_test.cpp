@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <set>
@@ -13,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include "exidel/predicates/build_info.hpp"
 #include "exidel/research/studies.hpp"
 
 namespace exidel::research {
@@ -117,11 +119,34 @@ TEST(FailureMap, StudyWritesAValidPngAndAReportThatReferencesIt) {
     write_text_file(out / "report.md", study.report.render());
     ASSERT_EQ(study.rows.size(), 1u);
     const Image img = read_png(out / study.rows[0].png);
-    EXPECT_EQ(img.width, 3 * 64 * 2 + 2 * 8);
-    EXPECT_EQ(img.height, 64 * 2);
-    // The wrong cells of the double kernel are drawn in red in the third panel.
+    const FailureMapLayout layout = failure_map_layout(64, 64);
+    EXPECT_EQ(img.width, layout.width);
+    EXPECT_EQ(img.height, layout.height);
+    EXPECT_EQ(layout.panel_width, 64 * 2);
+    // The wrong cells of the double kernel are drawn in red in the third panel, and only
+    // there (the legend's red square is below the panels).
     const Rgb red{215, 25, 28};
-    EXPECT_NE(std::find(img.pixels.begin(), img.pixels.end(), red), img.pixels.end());
+    std::size_t red_in_third = 0, red_in_first = 0;
+    for (int y = layout.panel_y; y < layout.panel_y + layout.panel_height; ++y) {
+        for (int x = 0; x < layout.panel_width; ++x) {
+            red_in_third += img.at(layout.panel_x[2] + x, y) == red;
+            red_in_first += img.at(layout.panel_x[0] + x, y) == red;
+        }
+    }
+    EXPECT_EQ(red_in_third, study.rows[0].wrong * 4);  // 2 x 2 pixels per cell
+    EXPECT_EQ(red_in_first, 0u);
+    // Title, axis labels and legend are drawn: dark text pixels above, left of and below
+    // the panels.
+    const auto dark_pixels = [&](int x0, int y0, int x1, int y1) {
+        std::size_t n = 0;
+        for (int y = y0; y < y1; ++y) {
+            for (int x = x0; x < x1; ++x) n += img.at(x, y) == Rgb{0, 0, 0};
+        }
+        return n;
+    };
+    EXPECT_GT(dark_pixels(0, 0, img.width, layout.panel_y), 100u);                      // title, captions
+    EXPECT_GT(dark_pixels(0, layout.panel_y, layout.panel_x[0] - 1, img.height), 20u);  // y label
+    EXPECT_GT(dark_pixels(0, layout.panel_y + layout.panel_height + 1, img.width, img.height), 200u);
     const std::string report = read_file(out / "report.md");
     EXPECT_NE(report.find("](" + study.rows[0].png + ")"), std::string::npos);
     EXPECT_NE(report.find("failure_map.csv"), std::string::npos);
@@ -578,6 +603,199 @@ TEST(Stages, CountingKernelAgreesWithTheAdaptiveKernel) {
     std::uint64_t distance_calls = 0;
     for (std::uint64_t v : k.counts[compare_distance_row]) distance_calls += v;
     EXPECT_EQ(distance_calls, 2u);
+}
+
+// --- reproducibility --------------------------------------------------------------
+
+/// Runs `command` through the shell in `dir`; its exit status.
+int run_in(const fs::path& dir, const std::string& command) {
+    const std::string cmd = "cd '" + dir.string() + "' && " + command + " >/dev/null 2>&1";
+    const int status = std::system(cmd.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+/// The text without its lines that start with `prefix`, and how many there were.
+std::pair<std::string, int> without_lines(const std::string& text, std::string_view prefix) {
+    std::istringstream in(text);
+    std::string kept;
+    int dropped = 0;
+    for (std::string line; std::getline(in, line);) {
+        if (line.starts_with(prefix)) {
+            ++dropped;
+        } else {
+            kept += line + '\n';
+        }
+    }
+    return {kept, dropped};
+}
+
+/// Every file of `a` and `b` is in both and the same, reports but for their one timing
+/// line; counts the reports.
+void expect_same_files(const std::map<std::string, std::string>& a, const std::map<std::string, std::string>& b,
+                       std::size_t& reports) {
+    for (const auto& [name, bytes] : b) EXPECT_TRUE(a.count(name)) << name << " appeared in the rerun only";
+    for (const auto& [name, bytes] : a) {
+        ASSERT_TRUE(b.count(name)) << name << " is missing from the rerun";
+        if (fs::path(name).filename() == "report.md") {
+            ++reports;
+            const auto [kept_a, timing_a] = without_lines(bytes, timing_prefix);
+            const auto [kept_b, timing_b] = without_lines(b.at(name), timing_prefix);
+            EXPECT_EQ(timing_a, 1) << name << ": one timing line, the only one that may differ";
+            EXPECT_EQ(timing_b, 1) << name;
+            EXPECT_EQ(kept_a, kept_b) << name << " differs from its rerun beyond the timing line";
+            EXPECT_NE(bytes.find("commit `"), std::string::npos) << name << ": no build facts";
+        } else {
+            EXPECT_EQ(bytes, b.at(name)) << name << " differs from its rerun";
+        }
+    }
+}
+
+// The promise of every report: the command on its rerun line writes the same files again.
+// The quick study runs once (two threads), then its own rerun line runs verbatim from
+// another folder (one thread: --jobs is not on the line, and must not matter): every file
+// must match byte for byte, except each report's one timing line. And no two pictures of
+// the run may show the same thing.
+TEST(Reproducibility, TheReportsRerunLineWritesTheSameFilesAgain) {
+#ifndef EXIDEL_CLI_PATH
+    GTEST_SKIP() << "the exidel command was not built";
+#else
+    const fs::path first = work_dir("rerun_first"), second = work_dir("rerun_second");
+    const std::string exidel = EXIDEL_CLI_PATH;
+    ASSERT_EQ(run_in(first, exidel + " study all --quick --jobs 2 --no-progress --out out"), 0);
+    const std::string report = read_file(first / "out" / "report.md");
+    const std::string rest = line_after(report, std::string(rerun_prefix));
+    const std::size_t close = rest.find('`');
+    ASSERT_NE(close, std::string::npos) << "no rerun line in report.md";
+    const std::string command = rest.substr(0, close);
+    EXPECT_EQ(command, "exidel study all --quick --seed 20250704 --out out");
+    ASSERT_TRUE(command.starts_with("exidel "));
+    ASSERT_EQ(run_in(second, exidel + command.substr(6)), 0) << command;
+
+    const auto a = snapshot(first / "out"), b = snapshot(second / "out");
+    ASSERT_FALSE(a.empty());
+    std::size_t reports = 0, pictures = 0;
+    expect_same_files(a, b, reports);
+    for (const auto& [name, bytes] : a) pictures += name.ends_with(".png");
+    EXPECT_EQ(reports, 5u);
+    EXPECT_GT(pictures, 1u);
+
+    // Each study's own report names the command that writes its folder alone: the study
+    // with the defaults `all` ran it with. Run for the two quick ones.
+    const fs::path third = work_dir("rerun_third");
+    for (const std::string study : {"failure-map", "precision", "triangulation", "stages"}) {
+        const std::string line = line_after(read_file(first / "out" / study / "report.md"), std::string(rerun_prefix));
+        const std::string own = line.substr(0, line.find('`'));
+        EXPECT_EQ(own, "exidel study " + study + " --quick --seed 20250704 --out out/" + study);
+        if (study != "failure-map" && study != "precision") continue;
+        ASSERT_EQ(run_in(third, exidel + own.substr(6)), 0) << own;
+        std::size_t one = 0;
+        expect_same_files(snapshot(first / "out" / study), snapshot(third / "out" / study), one);
+        EXPECT_EQ(one, 1u);
+    }
+
+    // No picture twice: neither the same file bytes, nor (titles aside) the same panels.
+    const FailureMapLayout layout = failure_map_layout(256, 256);
+    std::map<std::string, std::string> by_bytes, by_panels;
+    for (const auto& [name, bytes] : a) {
+        if (!name.ends_with(".png")) continue;
+        const auto [it, fresh] = by_bytes.emplace(bytes, name);
+        EXPECT_TRUE(fresh) << name << " and " << it->second << " are byte-identical";
+        const Image img = read_png(first / "out" / name);
+        ASSERT_EQ(img.width, layout.width) << name;
+        ASSERT_EQ(img.height, layout.height) << name;
+        std::string panels;
+        for (int p = 0; p < 3; ++p) {
+            for (int y = layout.panel_y; y < layout.panel_y + layout.panel_height; ++y) {
+                for (int x = layout.panel_x[p]; x < layout.panel_x[p] + layout.panel_width; ++x) {
+                    const Rgb c = img.at(x, y);
+                    panels += {char(c.r), char(c.g), char(c.b)};
+                }
+            }
+        }
+        const auto [same, new_panels] = by_panels.emplace(panels, name);
+        EXPECT_TRUE(new_panels) << name << " shows the same map as " << same->second;
+    }
+#endif
+}
+
+TEST(Reproducibility, StudyAllRefusesTheOptionsOfOneStudy) {
+#ifndef EXIDEL_CLI_PATH
+    GTEST_SKIP() << "the exidel command was not built";
+#else
+    // They would be ignored, and the rerun line would not show them.
+    const fs::path out = work_dir("all_refuses");
+    EXPECT_EQ(run_cli("study all --quick --kernel double --out " + out.string()), 2);
+    EXPECT_EQ(run_cli("study all --samples 10 --out " + out.string()), 2);
+    EXPECT_FALSE(fs::exists(out / "report.md"));
+#endif
+}
+
+TEST(Reproducibility, OneStudysRerunLineHasEveryOptionThatChangesAResult) {
+#ifndef EXIDEL_CLI_PATH
+    GTEST_SKIP() << "the exidel command was not built";
+#else
+    const fs::path dir = work_dir("rerun_one");
+    ASSERT_EQ(run_in(dir, std::string(EXIDEL_CLI_PATH) +
+                              " study failure-map --predicate orient2d --points '0.5,0.5;12,12;24,24'"
+                              " --width 16 --height 8 --kernel double --jobs 2 --out 'my maps'"),
+              0);
+    const std::string report = read_file(dir / "my maps" / "report.md");
+    EXPECT_EQ(line_after(report, std::string(rerun_prefix)).substr(0, line_after(report, std::string(rerun_prefix)).find('`')),
+              "exidel study failure-map --seed 20250704 --kernel double --predicate orient2d "
+              "--points '0.5,0.5;12,12;24,24' --width 16 --height 8 --out 'my maps'");
+    EXPECT_EQ(without_lines(report, timing_prefix).second, 1);
+#endif
+}
+
+// --- build facts -------------------------------------------------------------------
+
+TEST(BuildInfo, SaysWhichExidelCompilerAndLibrariesBuiltIt) {
+    const BuildInfo& b = build_info();
+    EXPECT_EQ(b.version, EXIDEL_TEST_VERSION);
+    EXPECT_NE(b.compiler.find(EXIDEL_TEST_COMPILER_VERSION), std::string_view::npos) << b.compiler;
+    // The library's own options are part of its flags, not only the global ones.
+    EXPECT_NE(b.cxx_flags.find("-ffp-contract=off"), std::string_view::npos) << b.cxx_flags;
+    EXPECT_EQ(b.cxx_flags.find("  "), std::string_view::npos) << b.cxx_flags;
+    EXPECT_FALSE(b.gmp.empty());
+    EXPECT_FALSE(b.mpfr.empty());
+    EXPECT_NE(b.boost.find('.'), std::string_view::npos) << b.boost;
+    // Every kernel of the registry, each spelled as the command line accepts it.
+    ASSERT_FALSE(b.kernels.empty());
+    for (std::string_view k : b.kernels) {
+        const std::string name = k == "mpfr:<bits>" ? "mpfr:64" : std::string(k);
+        EXPECT_NO_THROW((void)parse_kernel(name)) << k;
+    }
+    if (std::numeric_limits<long double>::digits == 64) {
+        EXPECT_TRUE(b.long_double.starts_with("x87 80-bit")) << b.long_double;
+    }
+    EXPECT_FALSE(cpu_model().empty());
+}
+
+// The commit is refreshed at every build: when the sources are a git checkout, it is
+// the checkout's HEAD (as of the last build, which ctest runs after).
+TEST(BuildInfo, TheCommitIsTheCheckoutsHead) {
+    const std::string commit(build_info().commit);
+    const std::string source = EXIDEL_TEST_SOURCE_DIR;
+    const std::string head = [&] {
+        std::string out;
+        FILE* pipe = popen(("git -C '" + source + "' rev-parse HEAD 2>/dev/null").c_str(), "r");
+        if (!pipe) return out;
+        char buf[128];
+        while (std::fgets(buf, sizeof buf, pipe)) out += buf;
+        pclose(pipe);
+        return out;
+    }();
+    if (!fs::exists(fs::path(source) / ".git") || head.empty()) {
+        EXPECT_EQ(commit, "unknown");
+        return;
+    }
+    // describe prints "<tag>-<n>-g<hash>" after a tag, else the abbreviated hash.
+    std::string hash = commit;
+    if (hash.ends_with("-dirty")) hash.resize(hash.size() - 6);
+    if (const std::size_t g = hash.rfind("-g"); g != std::string::npos) hash = hash.substr(g + 2);
+    EXPECT_GE(hash.size(), 12u) << commit;
+    EXPECT_TRUE(head.starts_with(hash)) << "build_info().commit " << commit << ", HEAD " << head
+                                        << " (rebuild after committing)";
 }
 
 }  // namespace

@@ -5,11 +5,14 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
+
+#include "exidel/predicates/build_info.hpp"
 
 namespace exidel::research {
 
@@ -161,10 +164,11 @@ std::string Table::text() const {
     return s.str();
 }
 
-std::string Report::render(std::string_view prefix, int level) const {
+std::string Report::render(std::string_view prefix, int level, bool embedded) const {
     std::ostringstream s;
     s << std::string(static_cast<std::size_t>(level), '#') << ' ' << title_ << "\n\n";
     for (const Block& b : blocks_) {
+        if (embedded && b.standalone) continue;
         switch (b.kind) {
             case Kind::heading:
                 s << std::string(static_cast<std::size_t>(level + 1), '#') << ' ' << b.text << "\n\n";
@@ -177,6 +181,73 @@ std::string Report::render(std::string_view prefix, int level) const {
         }
     }
     return s.str();
+}
+
+std::string shell_quote(std::string_view s) {
+    const bool plain = !s.empty() && std::all_of(s.begin(), s.end(), [](char c) {
+        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+               std::string_view("_./:,=+@%^-").find(c) != std::string_view::npos;
+    });
+    if (plain) return std::string(s);
+    std::string out = "'";
+    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+std::string default_command(std::string_view study, const RunOptions& run) {
+    return "exidel study " + std::string(study) + (run.quick ? " --quick" : "") + " --seed " +
+           std::to_string(run.seed) + " --out " + shell_quote(run.out.string());
+}
+
+Report run_header(const RunOptions& run) {
+    Report r("");
+    if (run.command.empty()) {
+        r.paragraph(std::string(rerun_prefix.substr(0, rerun_prefix.size() - 1)) +
+                    "this report was produced through the library API (exidel::research), "
+                    "not by the exidel command; seed " + std::to_string(run.seed) + ".");
+    } else {
+        r.paragraph(std::string(rerun_prefix) + run.command + "`");
+        r.standalone_paragraph(
+            "This command carries every option that changes a result (--jobs changes none). "
+            "Run with the build and on the machine below, it writes these files again byte for "
+            "byte, all but the timing line. Another build or machine may compute other results, "
+            "the long-double kernel's above all: they depend on the long-double format below.");
+    }
+    const BuildInfo& b = build_info();
+    std::string kernels;
+    for (std::string_view k : b.kernels) kernels += (kernels.empty() ? "" : ", ") + std::string(k);
+    Table t;
+    t.header = {"built and run with", ""};
+    // Appends rather than "`" + s + "`": GCC 12 warns falsely (-Wrestrict) on the latter.
+    const auto code = [](std::string_view v) {
+        std::string out(1, '`');
+        out.append(v);
+        out += '`';
+        return out;
+    };
+    t.rows = {
+        {"exidel", std::string(b.version) + ", commit " + code(b.commit)},
+        {"compiler", std::string(b.compiler) + (b.build_type.empty() ? "" : ", " + std::string(b.build_type) + " build")},
+        {"library flags", code(b.cxx_flags)},
+        {"GMP / MPFR / Boost", std::string(b.gmp) + " / " + std::string(b.mpfr) + " / " + std::string(b.boost)},
+        {"CPU", cpu_model()},
+        {"long double", std::string(b.long_double) + ": the long-double kernel's results depend on it"},
+        {"kernels", kernels},
+    };
+    r.standalone_table(t);
+    return r;
+}
+
+std::string timing_line(double seconds, const RunOptions& run) {
+    const std::time_t now = std::time(nullptr);
+    std::tm utc{};
+    gmtime_r(&now, &utc);
+    char date[32];
+    std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", &utc);
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "%.1f s wall-clock with %u thread%s, finished %s.", seconds, run.jobs,
+                  run.jobs == 1 ? "" : "s", date);
+    return std::string(timing_prefix) + buf;
 }
 
 void write_text_file(const std::filesystem::path& file, std::string_view text) {

@@ -193,6 +193,7 @@ PrecisionStudy run_precision_study(const PrecisionOptions& options, const RunOpt
         "operation rounded to p bits. For each formulation and family, " + std::to_string(samples) +
         " queries (seed " + std::to_string(run.seed) + ") were evaluated at every p and "
         "compared with the exact kernel. Families: " + family_list + ".");
+    study.report.append(family_definitions(families));
     study.report.image("wrong-sign rate vs precision", "precision.svg");
     study.report.paragraph(
         "Smallest precision without errors, measured, beside the bit counts of "

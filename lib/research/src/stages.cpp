@@ -2,6 +2,7 @@
 // each stage, per predicate and family, on raw query streams and inside triangulations
 // (the paper's lexicographic order with each in-circle policy, and the radial order,
 // whose sort is the only user of compare_distance).
+#include <cstdio>
 #include <map>
 
 #include "exidel/delaunay/triangulate.hpp"
@@ -63,6 +64,79 @@ void add(StageCounts& into, const StageCounts& from) {
     for (std::size_t p = 0; p < into.size(); ++p) {
         for (std::size_t s = 0; s < into[p].size(); ++s) into[p][s] += from[p][s];
     }
+}
+
+}  // namespace
+
+namespace {
+
+/// What the exponent range of a family does to the stages, with the measured shares of
+/// this run. The mechanism is the code's (predicates/src/adaptive.cpp): a filter that
+/// cannot decide, with some coordinate outside the range where expansions are error-free,
+/// hands the call to GMP at once.
+std::string exponent_spread_text(const std::vector<testing::Family>& families,
+                                 std::map<std::pair<std::size_t, int>, StageCounts>& combined) {
+    const auto share = [](const std::array<std::uint64_t, adaptive_stage_count>& per, AdaptiveStage st) {
+        std::uint64_t calls = 0;
+        for (std::uint64_t v : per) calls += v;
+        return calls == 0 ? 0.0 : double(per[std::size_t(st)]) / double(calls);
+    };
+    const auto percent = [](double v) {
+        char buf[16];
+        std::snprintf(buf, sizeof buf, "%.0f%%", 100 * v);
+        return std::string(buf);
+    };
+    std::string without_gmp;
+    struct Range {
+        double lo = 2, hi = -1;
+        std::string lo_family, hi_family;
+        void add(double v, std::string_view f) {
+            if (v < lo) lo = v, lo_family = f;
+            if (v > hi) hi = v, hi_family = f;
+        }
+    } orient, incircle;
+    for (std::size_t f = 0; f < families.size(); ++f) {
+        const StageCounts& c = combined[{f, 0}];
+        const std::string_view name = testing::family_name(families[f]);
+        bool gmp = false;
+        for (const auto& per : c) gmp = gmp || per[std::size_t(AdaptiveStage::gmp)] > 0;
+        if (!gmp) {
+            without_gmp += (without_gmp.empty() ? "" : ", ") + std::string(name);
+            continue;
+        }
+        orient.add(share(c[std::size_t(Predicate::orient2d)], AdaptiveStage::gmp), name);
+        incircle.add(share(c[std::size_t(Predicate::incircle)], AdaptiveStage::gmp), name);
+    }
+    std::string text =
+        "**What the exponent spread does.** In most families it is the exponent range, not "
+        "near-degeneracy, that sends calls past the filter. Every family but uniform and kettner "
+        "(and duplicates when it copies those) scales its points by 2^k with k drawn over most of "
+        "the double range, and wide_exponents puts every coordinate at its own exponent. The filters' error bounds hold only away from overflow and underflow: an "
+        "orient2d product above 2^1024 is infinite and never passes the filter's strict test "
+        "(coordinates above about 2^511), and far in the subnormals the bound's absolute "
+        "underflow term (2^-1070) exceeds the value (coordinates below about 2^-535); incircle's "
+        "semi-static bound is used only while its largest difference lies in [2^-240, 2^250], and "
+        "beyond that Shewchuk's stage A, relative to the permanent plus an underflow term, fails "
+        "the same way at about half those exponents (degree 4). A call the filter cannot decide, "
+        "with some coordinate outside the range where expansion arithmetic is error-free "
+        "(orient2d and compare_distance: exponents at most 500 and ulps no finer than 2^-537, so "
+        "magnitudes from about 2^-485; incircle: at most 250 and ulps no finer than 2^-268), goes "
+        "to GMP at once, without the expansion "
+        "stages: the gmp column measures the exponent range a family draws from. incircle_cosine "
+        "never reaches GMP: its last stage is cpp_int, which has no range limit (its exact column). ";
+    if (const std::size_t last = without_gmp.rfind(", "); last != std::string::npos) {
+        without_gmp.replace(last, 2, " and ");
+    }
+    if (!without_gmp.empty()) text += "In this run no stream call of " + without_gmp + " reached GMP";
+    if (orient.hi >= 0) {
+        text += std::string(without_gmp.empty() ? "In this run" : ";") + " GMP decided " + percent(orient.lo) +
+                " (" + orient.lo_family + ") to " + percent(orient.hi) + " (" + orient.hi_family +
+                ") of the orient2d stream calls and " + percent(incircle.lo) + " (" + incircle.lo_family +
+                ") to " + percent(incircle.hi) + " (" + incircle.hi_family +
+                ") of the incircle stream calls of the other families";
+    }
+    if (!without_gmp.empty() || orient.hi >= 0) text += ".";
+    return text;
 }
 
 }  // namespace
@@ -187,6 +261,14 @@ StagesStudy run_stages_study(const StagesOptions& options, const RunOptions& run
     write_text_file(run.out / "stages.csv", study.table.csv());
     write_text_file(run.out / "stages_summary.csv", summary.csv());
 
+    // The report's tables: per family, streams and triangulations apart (the pooled
+    // summary mixes families whose exponent ranges differ, which is what decides the stage).
+    Table streams, inside;
+    streams.header = inside.header = study.table.header;
+    for (const auto& row : study.table.rows) (row[1] == contexts[0] ? streams : inside).rows.push_back(row);
+    streams.header.erase(streams.header.begin() + 1);
+    for (auto& row : streams.rows) row.erase(row.begin() + 1);
+
     study.report = Report("Adaptive kernel: which stage decides");
     study.report.paragraph(
         "Fraction of calls decided by each stage of the adaptive kernel (filter: the "
@@ -202,11 +284,15 @@ StagesStudy run_stages_study(const StagesOptions& options, const RunOptions& run
         "order with each in-circle policy (determinant, cosine), and in the radial order with the "
         "determinant (radial: its sort is the only user of compare_distance). "
         "Seed " + std::to_string(run.seed) + ".");
-    study.report.paragraph("All families together:");
-    study.report.table(summary);
-    study.report.heading("Per family");
-    study.report.table(study.table);
+    study.report.append(family_definitions(families));
+    study.report.paragraph(exponent_spread_text(families, combined));
+    study.report.heading("Per family: query streams");
+    study.report.table(streams);
+    study.report.heading("Per family: inside triangulations");
+    study.report.table(inside);
     study.report.link("stages.csv", "stages.csv");
+    study.report.paragraph("All families pooled (the stage shares of a pool depend on which "
+                           "families it mixes; read the tables above):");
     study.report.link("stages_summary.csv", "stages_summary.csv");
     return study;
 }

@@ -582,8 +582,13 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
         if (!is_external(m)) others_text += ", and by the " + std::string(delaunay::to_string(m.algorithm)) + " algorithm";
     }
     study.report = Report("Triangulation outcomes per kernel and in-circle policy");
+    std::string families_text;
+    for (testing::Family f : families) {
+        families_text += (families_text.empty() ? "" : ", ") + std::string(testing::family_name(f));
+    }
+    if (families.size() == testing::all_families().size()) families_text = "Every family of lib/testing";
     study.report.paragraph(
-        "Every family of lib/testing, " + std::to_string(seeds) + " point sets each (sizes " + sizes_text +
+        families_text + ", " + std::to_string(seeds) + " point sets each (sizes " + sizes_text +
         ", cycled; seed " + std::to_string(run.seed) + "); every kernel and both in-circle "
         "policies triangulate the same point sets, in insertion order " + orders_text +
         (orders.size() == 1 && orders.front() == delaunay::Strategy::lexicographic ? " (the paper's algorithm)" : "") +
@@ -593,6 +598,7 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
         "locally Delaunay), **invalid** (not a triangulation of the points; the certifier's first "
         "finding in the last column), **failure** (the algorithm detected the inconsistency and "
         "stopped), **guard** (the predicate-call budget of 64 n^2 + 10^6 ran out; never expected).");
+    study.report.append(family_definitions(families));
     study.report.table(summary);
     study.report.paragraph("Minimal failing inputs (delta debugging until no single point can be removed), "
                            "written as fixtures in hex floats:");

@@ -72,7 +72,18 @@ struct RunOptions {
     bool quick = false;         ///< the short preset (study all --quick, the tests)
     bool progress = true;       ///< allow the progress bar (still only on a terminal)
     std::ostream* log = nullptr;  ///< summary lines (stdout in the CLI); null: silent
+    /// The command line that reproduces this run's files, printed at the top of its report
+    /// (run_header). The CLI sets it from the options given; run_all_studies composes its
+    /// own. Empty: the report says the run was made through the library API.
+    std::string command;
 };
+
+/// `exidel study <study> [--quick] --seed N --out DIR`: the command of a study run with
+/// no options but the common ones, which is what run_all_studies runs.
+std::string default_command(std::string_view study, const RunOptions& run);
+
+/// `s` quoted for a POSIX shell when it holds anything but [A-Za-z0-9_./:,=+@%^-].
+std::string shell_quote(std::string_view s);
 
 // ---------------------------------------------------------------------------------
 // Progress bar.
@@ -142,15 +153,26 @@ public:
     void link(std::string text, std::string path) {
         blocks_.push_back({Kind::link, std::move(text), std::move(path)});
     }
+    /// A paragraph shown only when the report is rendered on its own, not when it is
+    /// embedded in the report of `study all` (which says it once at the top).
+    void standalone_paragraph(std::string text) {
+        blocks_.push_back({Kind::paragraph, std::move(text), "", true});
+    }
+    void standalone_table(const Table& t) { blocks_.push_back({Kind::table, t.markdown(), "", true}); }
     /// Appends the blocks (not the title) of another report.
     void append(const Report& other) {
         blocks_.insert(blocks_.end(), other.blocks_.begin(), other.blocks_.end());
+    }
+    /// Puts the blocks (not the title) of another report before this one's.
+    void prepend(const Report& other) {
+        blocks_.insert(blocks_.begin(), other.blocks_.begin(), other.blocks_.end());
     }
     const std::string& title() const noexcept { return title_; }
 
     /// The Markdown; `prefix` (e.g. "precision/") is put before every image and link
     /// path, and `level` is the heading level of the title (sections get level + 1).
-    std::string render(std::string_view prefix = "", int level = 1) const;
+    /// `embedded`: leave out the standalone blocks.
+    std::string render(std::string_view prefix = "", int level = 1, bool embedded = false) const;
 
 private:
     enum class Kind { heading, paragraph, code, table, image, link };
@@ -158,10 +180,27 @@ private:
         Kind kind;
         std::string text;
         std::string path;
+        bool standalone = false;
     };
     std::string title_;
     std::vector<Block> blocks_;
 };
+
+/// The first line of every report's provenance: "Rerun: `<command>` ...". Tools (and the
+/// reproducibility test) find the command between the first pair of backquotes of the
+/// line that starts with this prefix.
+inline constexpr std::string_view rerun_prefix = "Rerun: `";
+/// The one line of a report that differs between reruns of its command on the same
+/// machine and build (wall-clock time, date, threads) starts with this prefix.
+inline constexpr std::string_view timing_prefix = "Timing (differs between reruns): ";
+
+/// The provenance blocks of a report: the rerun line, then (standalone only) what built
+/// and ran it: exidel version and commit, compiler and flags, GMP / MPFR / Boost, CPU, the
+/// long-double format.
+Report run_header(const RunOptions& run);
+/// "Timing (differs between reruns): 11.2 s wall-clock with 1 thread, finished
+/// 2026-12-02 12:31 UTC."
+std::string timing_line(double seconds, const RunOptions& run);
 
 /// Writes `text` to `file` (creating its folder); throws std::runtime_error on failure.
 void write_text_file(const std::filesystem::path& file, std::string_view text);

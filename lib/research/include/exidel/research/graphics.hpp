@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace exidel::research {
@@ -27,6 +28,20 @@ struct Image {
         return pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)];
     }
 };
+
+/// Text for pictures, in a built-in 5 x 8 bitmap font (printable ASCII; other characters
+/// are drawn as '?'), every font pixel a scale x scale square. Pixels outside the image
+/// are clipped.
+inline constexpr int glyph_width = 5, glyph_height = 8, glyph_advance = 6;
+/// Width in pixels of `text` drawn at `scale`.
+int text_width(std::string_view text, int scale);
+/// Draws `text` left to right with the top-left corner of its first glyph at (x, y).
+void draw_text(Image& image, int x, int y, std::string_view text, Rgb colour, int scale);
+/// Draws `text` bottom to top (turned a quarter left, for y-axis labels), starting at
+/// (x, y), the bottom-left corner of the turned text.
+void draw_text_vertical(Image& image, int x, int y, std::string_view text, Rgb colour, int scale);
+/// Fills a w x h rectangle whose top-left corner is (x, y).
+void fill_rect(Image& image, int x, int y, int w, int h, Rgb colour);
 
 /// Writes `image` as an 8-bit RGB PNG. Throws std::runtime_error with libpng's message.
 void write_png(const std::filesystem::path& file, const Image& image);

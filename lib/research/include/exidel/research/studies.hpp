@@ -75,9 +75,21 @@ struct FailureMap {
 FailureMap compute_failure_map(const FailureMapSpec& spec, const Kernel& kernel, unsigned jobs,
                                Progress* progress = nullptr);
 
-/// Three panels side by side, 2 px per cell when the map is at most 256 wide: the
+/// Where render_failure_map puts things, a function of the map's size only.
+struct FailureMapLayout {
+    int width = 0, height = 0;      ///< the whole picture
+    int cell = 1;                   ///< pixels per cell side
+    int panel_x[3] = {};            ///< left edge of each panel
+    int panel_y = 0;                ///< top edge of the panels
+    int panel_width = 0, panel_height = 0;
+};
+FailureMapLayout failure_map_layout(int width, int height);
+
+/// Three panels side by side, 2 px per cell when the map is at most 256 x 256: the
 /// kernel's signs, the exact signs, and the exact signs faded with every wrong cell in
-/// red. Colours: positive blue, zero white, negative amber; y grows upward.
+/// red. Colours: positive blue, zero white, negative amber; y grows upward. Around them:
+/// a title (preset, predicate, moving point, kernel, wrong count), a caption per panel,
+/// the offsets in ulps on both axes, and a legend of the colours.
 Image render_failure_map(const FailureMap& map);
 
 struct FailureMapOptions {
@@ -315,8 +327,17 @@ StagesStudy run_stages_study(const StagesOptions& options, const RunOptions& run
 // =================================================================================
 
 /// All four studies with the quick (or default) presets, each in its own subfolder of
-/// run.out, and run.out/report.md embedding the four reports.
+/// run.out, and run.out/report.md embedding the four reports. Every report starts with the
+/// command that writes its files again (run.command is not used: `study all` takes only
+/// the common options, so the command follows from them) and what built and ran it.
 void run_all_studies(const RunOptions& run);
+
+/// One sentence defining a family: its configuration, ulp offsets and exponent range, as
+/// the generators of lib/testing build it.
+std::string_view family_definition(testing::Family f);
+/// A Markdown list defining each family, for a report (standalone: only when the report
+/// is rendered on its own, as `study all` defines every family once at its top).
+Report family_definitions(std::span<const testing::Family> families, bool standalone = true);
 
 /// Families by name from a comma-separated list ("all" or "near" allowed).
 std::vector<testing::Family> parse_families(std::string_view list);
