@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "exidel/delaunay/algorithms.hpp"
+#include "exidel/predicates/build_info.hpp"
 
 namespace {
 
@@ -44,6 +46,19 @@ void print_usage(std::ostream& os) {
     os << "\nExit status: 0 success, 1 failure (bad input data, I/O), 2 bad usage.\n";
 }
 
+// What a bug report needs: which exidel, built how, with which number libraries.
+void print_version(std::ostream& os) {
+    const exidel::BuildInfo& b = exidel::build_info();
+    os << "exidel " << b.version << " (commit " << b.commit << ")\n"
+       << "compiler: " << b.compiler << ", " << (b.build_type.empty() ? "no" : b.build_type)
+       << " build\nlibrary flags: " << b.cxx_flags << "\nGMP " << b.gmp << ", MPFR " << b.mpfr
+       << ", Boost " << b.boost << "\nlong double: " << b.long_double << "\nkernels:";
+    for (const std::string_view k : b.kernels) os << ' ' << k;
+    os << "\nalgorithms:";
+    for (const exidel::delaunay::AlgorithmInfo& a : exidel::delaunay::algorithms()) os << ' ' << a.name;
+    os << '\n';
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -59,7 +74,7 @@ int main(int argc, char** argv) {
         return exit_ok;
     }
     if (first == "--version") {
-        std::cout << "exidel " << EXIDEL_VERSION << '\n';
+        print_version(std::cout);
         return exit_ok;
     }
     for (const Command& c : commands) {

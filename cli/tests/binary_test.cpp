@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "exidel/predicates/build_info.hpp"
 #include "run_binary.hpp"
 
 namespace {
@@ -35,7 +36,20 @@ TEST(ExidelBinary, TopLevelHelpAndUsage) {
     const RunResult unknown = run("frobnicate");
     EXPECT_EQ(unknown.status, 2);
     EXPECT_NE(unknown.err.find("unknown command 'frobnicate'"), std::string::npos);
-    EXPECT_EQ(run("--version").status, 0);
+    // --version says which exidel, built how, with which kernels.
+    const RunResult version = run("--version");
+    EXPECT_EQ(version.status, 0);
+    const exidel::BuildInfo& b = exidel::build_info();
+    EXPECT_EQ(version.out.rfind("exidel " + std::string(b.version) + " (commit " +
+                                    std::string(b.commit) + ")\n",
+                                0),
+              0u)
+        << version.out;
+    for (const char* part : {"compiler: ", "-ffp-contract=off", "GMP ", "MPFR ", "Boost ",
+                             "long double: ", "kernels: double long-double adaptive",
+                             "algorithms: external"}) {
+        EXPECT_NE(version.out.find(part), std::string::npos) << part << "\n" << version.out;
+    }
 }
 
 TEST(ExidelBinary, PredicateHelp) {

@@ -249,7 +249,7 @@ inline constexpr std::array<std::array<Point2, 3>, 3> kettner_configurations{{
 /// A Kettner et al. configuration with p moved over their 256 x 256 window of ulp steps
 /// (p.x + i ulp, p.y + j ulp, 0 <= i, j < 256, shrinking toward p itself); q and r as
 /// published. Points beyond the third lie on the diagonal y = x (exactly collinear with
-/// the first configuration) at dyadic positions in [0.5, 32).
+/// the first configuration) at dyadic positions in [0.5, 16) (k 2^-47, 2^46 <= k < 2^51).
 inline rc::Gen<std::vector<Point2>> gen_kettner_points(std::size_t n) {
     return rc::gen::exec([n] {
         const auto& config = kettner_configurations[*rc::gen::inRange<std::size_t>(0, 3)];
