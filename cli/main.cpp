@@ -1,5 +1,7 @@
 // exidel: the command-line entry point. Dispatches `exidel <command> [options]` to one
 // function per subcommand, each in its own file (see commands.hpp).
+#include <malloc.h>
+
 #include <array>
 #include <exception>
 #include <iostream>
@@ -63,6 +65,12 @@ void print_version(std::ostream& os) {
 
 int main(int argc, char** argv) {
     std::ios::sync_with_stdio(false);  // output is one short line per query: keep it buffered
+    // Blocks up to 32 MB from the heap, kept when freed (glibc would raise its threshold
+    // to this by itself after the first large free): each phase of a triangulation
+    // allocates and frees arrays of that size, and a fresh page costs microseconds on
+    // some machines (docs/measurements.md, "Text input and output").
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    mallopt(M_TRIM_THRESHOLD, 64 << 20);
     const std::vector<std::string_view> args(argv + (argc > 0 ? 1 : 0), argv + argc);
     if (args.empty()) {
         print_usage(std::cerr);
