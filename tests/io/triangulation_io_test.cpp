@@ -113,8 +113,9 @@ TEST(WriteTriangulation, SvgIsWellFormedWithYUp) {
               std::string::npos)
         << svg;
     // (0, 0) is at the bottom of the picture, (0, 1) at the top.
-    EXPECT_NE(svg.find("<circle cx=\"0.000\" cy=\"1000.000\""), std::string::npos) << svg;
-    EXPECT_NE(svg.find("<circle cx=\"0.000\" cy=\"0.000\""), std::string::npos) << svg;
+    EXPECT_NE(svg.find("<path d=\"M0.000 1000.000 h0 M1000.000 1000.000 h0"), std::string::npos)
+        << svg;
+    EXPECT_NE(svg.find(" M0.000 0.000 h0 M0.000 1000.000 h0\"/>"), std::string::npos) << svg;
     // Two triangles, one closed hull.
     EXPECT_NE(svg.find("d=\"M0.000 1000.000 L1000.000 1000.000 L1000.000 0.000 Z M"),
               std::string::npos);
@@ -152,11 +153,13 @@ TEST(WriteTriangulation, SvgPathsStayShortForXmlParsers) {
         longest = std::max(longest, d.size());
         ++paths;
         for (std::size_t z = d.find('Z'); z != std::string::npos; z = d.find('Z', z + 1)) ++triangles;
+        EXPECT_LE(std::count(d.begin(), d.end(), 'M'), static_cast<long>(svg_path_items));
     }
     const std::size_t n = r.triangulation.triangle_count();
     EXPECT_EQ(n, 2u * 59 * 59);
     EXPECT_EQ(triangles, n + 1);  // and the hull's Z
-    EXPECT_EQ(paths, (n + svg_path_items - 1) / svg_path_items + 1);
+    const std::size_t point_paths = (grid.size() + svg_path_items - 1) / svg_path_items;
+    EXPECT_EQ(paths, (n + svg_path_items - 1) / svg_path_items + 1 + point_paths);
     EXPECT_LT(longest, 60 * svg_path_items);
     // A hull longer than one path: pieces that join end to start, covering every edge.
     Triangulation big;
@@ -169,7 +172,7 @@ TEST(WriteTriangulation, SvgPathsStayShortForXmlParsers) {
          at = chain.find("<path d=\"M", at + 1)) {
         ++pieces;
     }
-    EXPECT_EQ(pieces, 3u);
+    EXPECT_EQ(pieces, 3u + point_paths);  // 2500 hull edges in pieces of 1000, and the dots
 }
 
 TEST(WriteTriangulation, JsonIsTheSameWithThreads) {

@@ -19,9 +19,10 @@
 //   svg   a picture: triangles, the hull drawn thicker, the points as dots; scaled into a
 //         viewBox about 1000 units wide with y flipped so that up is up. For looking at,
 //         not for reading back (coordinates are rounded to 0.001 of the viewBox). Paths
-//         hold at most svg_path_items triangles (or hull vertices) each: XML parsers cap an
-//         attribute's length (libxml2, under librsvg, at 10 MB), which one path of every
-//         triangle passes near 10^5 points.
+//         hold at most svg_path_items triangles (hull vertices, points) each: XML parsers
+//         cap an attribute's length (libxml2, under librsvg, at 10 MB), which one path of
+//         every triangle passes near 10^5 points, and librsvg refuses more than 10^6
+//         elements, which one element per point passes at 10^6 points.
 #pragma once
 
 #include <cstddef>
