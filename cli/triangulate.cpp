@@ -27,7 +27,6 @@
 #include "commands.hpp"
 #include "exidel/delaunay/algorithms.hpp"
 #include "exidel/delaunay/certify.hpp"
-#include "exidel/delaunay/external.hpp"
 #include "exidel/delaunay/triangulate.hpp"
 #include "exidel/io/points.hpp"
 #include "exidel/io/triangulation.hpp"

@@ -57,7 +57,6 @@ public:
     }
     /// The shortest decimal that reads back as exactly `v` (std::to_chars).
     NumberWriter& number(double v) { return put(v); }
-    NumberWriter& number(std::int64_t v) { return put(v); }
     NumberWriter& number(std::uint64_t v) { return put(v); }
     /// `v` with `digits` digits after the point (for pictures, not for reading back).
     NumberWriter& fixed(double v, int digits) {

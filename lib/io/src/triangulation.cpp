@@ -218,9 +218,6 @@ std::vector<T> integer_array(detail::JsonCursor& j, std::string_view key, std::i
     return v;
 }
 
-// Marks "the file had no duplicates key" inside parse_json's result (never a valid index).
-constexpr std::uint32_t no_duplicates_key = 0xffffffff;
-
 // Triangle's .ele: the triangles alone, as input indices.
 Triangulation parse_ele(std::string_view text, std::size_t point_count) {
     Triangulation tri;
@@ -396,9 +393,9 @@ void write_triangulation(std::ostream& out, std::span<const Point2> points,
     }
 }
 
-// The json layout; with `duplicates_optional` a missing "duplicates" key is marked by
-// no_duplicates_key for read_triangulation to derive.
-static Triangulation parse_json(std::string_view text, bool duplicates_optional) {
+// The json layout. With `has_duplicates` given, "duplicates" may be missing, and
+// *has_duplicates says whether it was there; without, it is required.
+static Triangulation parse_json(std::string_view text, bool* has_duplicates) {
     detail::JsonCursor j(text);
     Triangulation tri;
     constexpr std::int64_t max_u32 = 0xffffffff, max_i32 = 0x7fffffff;
@@ -420,16 +417,16 @@ static Triangulation parse_json(std::string_view text, bool duplicates_optional)
         }
     } while (j.accept(','));
     j.expect('}', "or ',' after an array");
-    for (std::size_t k = 0; k < (duplicates_optional ? 3 : 4); ++k) {
+    for (std::size_t k = 0; k < (has_duplicates ? 3 : 4); ++k) {
         if (!seen[k]) j.fail("key \"" + std::string(keys[k]) + "\" is missing");
     }
     if (!j.at_end()) j.fail("unexpected " + j.found() + " after the closing '}'");
     tri.collinear = tri.triangles.empty();
-    if (duplicates_optional && !seen[3]) tri.duplicates = {no_duplicates_key};
+    if (has_duplicates) *has_duplicates = seen[3];
     return tri;
 }
 
-Triangulation parse_triangulation_json(std::string_view text) { return parse_json(text, false); }
+Triangulation parse_triangulation_json(std::string_view text) { return parse_json(text, nullptr); }
 
 void fill_vertex_of_input(std::span<const Point2> points, Triangulation& tri) {
     std::vector<std::uint32_t> order(points.size());
@@ -449,8 +446,9 @@ void fill_vertex_of_input(std::span<const Point2> points, Triangulation& tri) {
 delaunay::Triangulation read_triangulation(std::string_view text, TriangulationFormat format,
                                            std::span<const Point2> points) {
     Triangulation tri;
+    bool has_duplicates = false;  // json may list them; .ele cannot
     if (format == TriangulationFormat::json) {
-        tri = parse_json(text, true);
+        tri = parse_json(text, &has_duplicates);
     } else if (format == TriangulationFormat::ele) {
         tri = parse_ele(text, points.size());
         tri.collinear = tri.triangles.empty();
@@ -461,10 +459,7 @@ delaunay::Triangulation read_triangulation(std::string_view text, TriangulationF
                                     std::string(to_string(format)) + " format (json or ele)");
     }
     fill_vertex_of_input(points, tri);
-    const bool derive_duplicates = format == TriangulationFormat::ele ||
-                                   (tri.duplicates.size() == 1 &&
-                                    tri.duplicates[0] == no_duplicates_key);
-    if (derive_duplicates) {
+    if (!has_duplicates) {
         tri.duplicates.clear();
         for (std::size_t i = 0; i < points.size(); ++i) {
             if (tri.vertex_of_input[i] != i) tri.duplicates.push_back(static_cast<std::uint32_t>(i));
