@@ -18,16 +18,7 @@
 cmake_minimum_required(VERSION 3.25)
 include(${CMAKE_CURRENT_LIST_DIR}/common.cmake)
 
-foreach(var MODE README WORK_DIR CMAKE_GENERATOR CXX_COMPILER)
-  if(NOT DEFINED ${var})
-    message(FATAL_ERROR "readme.cmake: -D${var}=... is required")
-  endif()
-endforeach()
-
-file(REMOVE_RECURSE ${WORK_DIR})
-file(MAKE_DIRECTORY ${WORK_DIR})
-set(common_args -G ${CMAKE_GENERATOR} -DCMAKE_BUILD_TYPE=Release
-    -DCMAKE_CXX_COMPILER=${CXX_COMPILER})
+fresh_work_dir(readme.cmake MODE README WORK_DIR CMAKE_GENERATOR CXX_COMPILER)
 # The flags a geometry user's build may well have; exidel's answers must not depend on them.
 set(user_flags "-ffast-math -O3 -march=native")
 

@@ -8,20 +8,9 @@
 # subdirectory: build and run the same consumer with add_subdirectory(<exidel source>).
 cmake_minimum_required(VERSION 3.25)
 
-foreach(var MODE EXIDEL_SOURCE_DIR CONSUMER_SOURCE_DIR WORK_DIR CMAKE_GENERATOR CXX_COMPILER)
-  if(NOT DEFINED ${var})
-    message(FATAL_ERROR "run.cmake: -D${var}=... is required")
-  endif()
-endforeach()
-
-# Fresh trees every run: a stale cache would hide a broken package.
-file(REMOVE_RECURSE ${WORK_DIR})
-file(MAKE_DIRECTORY ${WORK_DIR})
-
-set(common_args -G ${CMAKE_GENERATOR} -DCMAKE_BUILD_TYPE=Release
-    -DCMAKE_CXX_COMPILER=${CXX_COMPILER})
-
-include(${CMAKE_CURRENT_LIST_DIR}/common.cmake)  # run()
+include(${CMAKE_CURRENT_LIST_DIR}/common.cmake)  # run(), fresh_work_dir()
+fresh_work_dir(run.cmake MODE EXIDEL_SOURCE_DIR CONSUMER_SOURCE_DIR WORK_DIR CMAKE_GENERATOR
+               CXX_COMPILER)
 
 if(MODE STREQUAL "install")
   set(prefix ${WORK_DIR}/prefix)
