@@ -379,12 +379,14 @@ TEST(ExidelTriangulate, StatsIsOneJsonObjectWithEveryKey) {
           "counters.theorem1_checks", "counters.theorem1_violations",
           "counters.visible_search_orientations", "counters.merge_orientations",
           "counters.merge_incircle_tests", "counters.merge_deleted_edges",
-          "counters.merge_cross_edges", "counters.flips", "algorithm", "strategy", "strips",
+          "counters.merge_cross_edges", "counters.location_steps",
+          "counters.location_orientations", "counters.cavity_orientations",
+          "counters.lawson_flips", "counters.flips", "algorithm", "strategy", "strips",
           "threads", "failure", "read_ms", "triangulate_ms", "certify_ms", "write_ms",
           "total_ms"}) {
         EXPECT_TRUE(v.count(key)) << key << " missing in " << r.err;
     }
-    EXPECT_EQ(v.size(), 33u) << r.err;
+    EXPECT_EQ(v.size(), 37u) << r.err;
     EXPECT_EQ(v.at("failure"), "null");
     EXPECT_EQ(v.at("threads"), "1");  // radial runs on one thread whatever --threads says
     EXPECT_GE(std::stod(v.at("total_ms")), std::stod(v.at("triangulate_ms")));

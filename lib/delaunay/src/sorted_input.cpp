@@ -22,6 +22,9 @@ std::string_view to_string(FailureKind kind) noexcept {
         case FailureKind::merge_inconsistent: return "merge_inconsistent";
         case FailureKind::result_inconsistent: return "result_inconsistent";
         case FailureKind::unknown_algorithm: return "unknown_algorithm";
+        case FailureKind::location_exceeded: return "location_exceeded";
+        case FailureKind::cavity_inconsistent: return "cavity_inconsistent";
+        case FailureKind::flips_exceeded: return "flips_exceeded";
     }
     return "unknown";
 }

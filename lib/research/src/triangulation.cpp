@@ -106,7 +106,7 @@ std::string per_point(std::uint64_t value, std::size_t points) {
 
 std::uint64_t orientations(const delaunay::Counters& c) {
     return c.seed_orientations + c.tangent_orientations + c.visible_search_orientations +
-           c.merge_orientations;
+           c.merge_orientations + c.location_orientations + c.cavity_orientations;
 }
 std::uint64_t incircle_tests(const delaunay::Counters& c) { return c.incircle_tests + c.merge_incircle_tests; }
 

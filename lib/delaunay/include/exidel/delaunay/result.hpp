@@ -64,7 +64,14 @@ enum class Instrumentation {
 /// vertex c, the new point p and c are strictly on opposite sides of ab (exact
 /// orientation); visible_search_orientations: the radial order's search for a visible
 /// hull edge from the hash; merge_*: the strips' zipper (orientations in the tangent
-/// search and candidate validity; deleted edges: of the two sides, removed by a merge).
+/// search and candidate validity; deleted edges: of the two sides, removed by a merge);
+/// location_steps: triangles a point-location walk entered, or history-DAG nodes a
+/// descent passed through (bowyer-watson, randomized); location_orientations: the
+/// orient2d calls of point location; cavity_orientations: bowyer-watson's orient2d calls
+/// deciding whether a triangle is in conflict (ghost triangles; with the cosine policy
+/// the side test before an in-circle test); lawson_flips: edges flipped to restore the
+/// Delaunay property (randomized). Bowyer-Watson counts the edges inside each cavity as
+/// eroded_edges: the flips a split and Lawson's flips would have made.
 #define EXIDEL_DELAUNAY_COUNTERS(X) \
     X(seed_orientations)            \
     X(tangent_orientations)         \
@@ -78,7 +85,11 @@ enum class Instrumentation {
     X(merge_orientations)           \
     X(merge_incircle_tests)         \
     X(merge_deleted_edges)          \
-    X(merge_cross_edges)
+    X(merge_cross_edges)            \
+    X(location_steps)               \
+    X(location_orientations)        \
+    X(cavity_orientations)          \
+    X(lawson_flips)
 
 struct Counters {
 #define EXIDEL_DELAUNAY_COUNTER_FIELD(name) std::uint64_t name = 0;
@@ -93,9 +104,9 @@ struct Counters {
 #undef EXIDEL_DELAUNAY_COUNTER_VISIT
     }
 
-    /// Edge flips in the incremental view plus edges deleted by merges: the work that
-    /// depends on the insertion order.
-    std::uint64_t flips() const noexcept { return eroded_edges + merge_deleted_edges; }
+    /// Edge flips in the incremental view plus edges deleted by merges plus Lawson flips:
+    /// the work that depends on the insertion order.
+    std::uint64_t flips() const noexcept { return eroded_edges + merge_deleted_edges + lawson_flips; }
     Counters& operator+=(const Counters& o) noexcept;
 };
 
@@ -114,6 +125,9 @@ enum class FailureKind {
     merge_inconsistent,    ///< strips: the zipper's answers do not describe a merge
     result_inconsistent,   ///< the finished structure does not close (hull or neighbours)
     unknown_algorithm,     ///< Options::algorithm holds no Algorithm enumerator
+    location_exceeded,     ///< a point-location walk or DAG descent did not end where it must
+    cavity_inconsistent,   ///< bowyer-watson: the conflict triangles do not form a disc
+    flips_exceeded,        ///< randomized: more flips than the new point can have neighbours
 };
 
 std::string_view to_string(FailureKind kind) noexcept;
