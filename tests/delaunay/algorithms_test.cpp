@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
 #include <ostream>
 #include <set>
 #include <string>
@@ -99,8 +100,11 @@ TEST_P(EveryAlgorithm, DoubleKernelReturnsAResultOrATypedFailure) {
     }));
 }
 
+// GoogleTest names allow letters, digits and '_' only: "bowyer-watson" is bowyer_watson.
 std::string name_of(const ::testing::TestParamInfo<AlgorithmInfo>& info) {
-    return std::string(info.param.name);
+    std::string name(info.param.name);
+    std::replace(name.begin(), name.end(), '-', '_');
+    return name;
 }
 
 INSTANTIATE_TEST_SUITE_P(Registry, EveryAlgorithm, ::testing::ValuesIn(algorithms().begin(),

@@ -93,8 +93,9 @@ bool exact_scale(double a, int k, double& s) {
 
 // The forced edges, renamed by input index through `to_original`.
 std::set<test::Edge> forced_edges(const std::vector<Point2>& pts,
-                                  const std::vector<std::uint32_t>& to_original) {
-    const Result r = triangulate(pts, AdaptiveKernel{});
+                                  const std::vector<std::uint32_t>& to_original,
+                                  const Options& options) {
+    const Result r = triangulate(pts, AdaptiveKernel{}, options);
     RC_ASSERT(r.ok());
     const Certificate c = certify(pts, r.triangulation);
     if (!c.ok()) RC_FAIL("certify: " + c.summary());
@@ -107,9 +108,18 @@ std::set<test::Edge> forced_edges(const std::vector<Point2>& pts,
     return out;
 }
 
-RC_GTEST_PROP(DelaunayProperties, MetamorphicTransformsKeepForcedEdges, ()) {
+// Every algorithm of the registry (the external one in its default order): the forced
+// edges do not depend on how the points are numbered, mirrored, swapped, or exactly scaled
+// and translated.
+void check_metamorphic(const AlgorithmInfo& algorithm) {
     const auto s = *test::gen_point_set(max_points);
     RC_TAG(s.family);
+    Options options;
+    options.algorithm = algorithm.id;
+    const auto forced_edges = [&](const std::vector<Point2>& pts,
+                                  const std::vector<std::uint32_t>& to_original) {
+        return ::forced_edges(pts, to_original, options);
+    };
     const std::size_t n = s.points.size();
     const auto first = test::first_occurrence(s.points);
     std::vector<std::uint32_t> identity(n);
@@ -164,6 +174,20 @@ RC_GTEST_PROP(DelaunayProperties, MetamorphicTransformsKeepForcedEdges, ()) {
         RC_ASSERT(forced_edges(*moved, same_names) == base);
     }
 }
+
+class MetamorphicEveryAlgorithm : public ::testing::TestWithParam<AlgorithmInfo> {};
+
+TEST_P(MetamorphicEveryAlgorithm, TransformsKeepForcedEdges) {
+    EXPECT_TRUE(rc::check(std::string(GetParam().name), [&] { check_metamorphic(GetParam()); }));
+}
+
+INSTANTIATE_TEST_SUITE_P(Registry, MetamorphicEveryAlgorithm,
+                         ::testing::ValuesIn(algorithms().begin(), algorithms().end()),
+                         [](const ::testing::TestParamInfo<AlgorithmInfo>& info) {
+                             std::string name(info.param.name);
+                             std::replace(name.begin(), name.end(), '-', '_');
+                             return name;
+                         });
 
 // The plain double kernel may be wrong, but must never crash, hang or produce arrays
 // that point outside themselves. Its outcomes per family are counted and printed, not

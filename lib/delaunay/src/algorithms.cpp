@@ -9,8 +9,8 @@ namespace exidel::delaunay {
 
 namespace {
 
-#define EXIDEL_ALGORITHM_INFO_(name, Type, takes_order, summary) \
-    AlgorithmInfo{Algorithm::name, #name, takes_order, summary},
+#define EXIDEL_ALGORITHM_INFO_(name, spelling, Type, takes_order, summary) \
+    AlgorithmInfo{Algorithm::name, spelling, takes_order, summary},
 constexpr AlgorithmInfo table[] = {EXIDEL_DELAUNAY_ALGORITHMS(EXIDEL_ALGORITHM_INFO_)};
 #undef EXIDEL_ALGORITHM_INFO_
 

@@ -503,7 +503,8 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
     }
     Table work_table;
     work_table.header = method_header({"family"}, {"point sets", "points", "flips/point", "in-circle tests/point",
-                                                   "orientations/point", "distance comparisons/point", "merges",
+                                                   "orientations/point", "distance comparisons/point",
+                                                   "location steps/point", "triangles created/point", "merges",
                                                    "certified"});
     const auto work_row = [&](std::string family, const OrderWork& w) {
         work_table.rows.push_back(join(join({std::move(family)}, method_cells(Method(w.algorithm, w.order))), {
@@ -511,7 +512,9 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
                                    per_point(w.counters.flips(), w.points),
                                    per_point(incircle_tests(w.counters), w.points),
                                    per_point(orientations(w.counters), w.points),
-                                   per_point(w.distance_comparisons, w.points), std::to_string(w.merges),
+                                   per_point(w.distance_comparisons, w.points),
+                                   per_point(w.counters.location_steps, w.points),
+                                   per_point(w.counters.triangles_created, w.points), std::to_string(w.merges),
                                    std::to_string(w.certified) + "/" + std::to_string(w.sets)}));
     };
     for (const OrderWork& w : study.work) work_row(std::string(testing::family_name(w.family)), w);
@@ -617,6 +620,12 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
         "tests and orientations of the algorithm (insertions and merges), and distance comparisons: the "
         "compare_distance calls of the radial sort, made only where its floating-point key cannot "
         "separate two points (counted by the kernel; the floating-point sort itself is not counted). "
+        "Algorithms that locate their points (bowyer-watson: a walk; randomized: a history DAG) add "
+        "location steps (triangles the walk entered, DAG nodes the descent passed) and their orientations "
+        "count among the orientations; triangles created counts finite triangles, de Berg et al.'s "
+        "quantity (at most 9n + 1 in expectation for the randomized algorithm, de Berg et al. 3rd ed., Section 9.4). "
+        "For bowyer-watson, flips are the edges inside each cavity (what a split and Lawson's flips "
+        "would have removed); for randomized, Lawson's flips. "
         "merges: strips merged over all sets; certified: results the exact certifier accepted.");
     study.report.table(work_table);
     study.report.heading("Per family");

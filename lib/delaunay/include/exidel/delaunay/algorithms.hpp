@@ -1,9 +1,10 @@
 // exidel: the one list of triangulation algorithms.
 //
-// EXIDEL_DELAUNAY_ALGORITHMS(X) expands X(name, Type, takes_order, "summary") once per
-// algorithm, in the order help texts and studies list them:
-//   name     the enumerator of Algorithm and the spelling on every command line, in
-//            --stats ("algorithm") and in the research tables;
+// EXIDEL_DELAUNAY_ALGORITHMS(X) expands X(name, "spelling", Type, takes_order, "summary")
+// once per algorithm, in the order help texts and studies list them:
+//   name     the enumerator of Algorithm;
+//   spelling its name on every command line, in --stats ("algorithm"), in the research
+//            tables and in fixture file names;
 //   Type     detail::Type, the algorithm: one header in detail/ with
 //              template <PredicateKernel K, Instrumentation I, InCirclePolicy P>
 //              static Result run(const K&, detail::SortedInput&, const Options&);
@@ -25,15 +26,17 @@
 
 // clang-format off
 #define EXIDEL_DELAUNAY_ALGORITHMS(X)                                                          \
-    X(external, ExternalIncremental, true,                                                     \
-      "Cai 2025, each point outside the hull; O(n log n) expected (radial, strips)")
+    X(external, "external", ExternalIncremental, true,                                         \
+      "Cai 2025, each point outside the hull; O(n log n) expected (radial, strips)")          \
+    X(bowyer_watson, "bowyer-watson", BowyerWatson, false,                                     \
+      "BRIO order, walk to the point, cavity of conflicting triangles re-fanned; O(n log n) expected")
 // clang-format on
 
 namespace exidel::delaunay {
 
 /// Which algorithm triangulate() runs (Options::algorithm).
 enum class Algorithm : std::uint8_t {
-#define EXIDEL_ALGORITHM_ENUMERATOR_(name, Type, takes_order, summary) name,
+#define EXIDEL_ALGORITHM_ENUMERATOR_(name, spelling, Type, takes_order, summary) name,
     EXIDEL_DELAUNAY_ALGORITHMS(EXIDEL_ALGORITHM_ENUMERATOR_)
 #undef EXIDEL_ALGORITHM_ENUMERATOR_
 };

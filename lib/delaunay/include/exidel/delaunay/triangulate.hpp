@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "exidel/delaunay/algorithms.hpp"
+#include "exidel/delaunay/detail/bowyer_watson.hpp"
 #include "exidel/delaunay/detail/external_incremental.hpp"
 #include "exidel/delaunay/detail/mesh.hpp"
 #include "exidel/delaunay/external.hpp"
@@ -35,7 +36,7 @@ Result run_algorithm(const K& kernel, SortedInput& in, const Options& options) {
     result.algorithm = options.algorithm;
     MeshOutput out;
     switch (options.algorithm) {
-#define EXIDEL_RUN_ALGORITHM_(name, Type, takes_order, summary)                      \
+#define EXIDEL_RUN_ALGORITHM_(name, spelling, Type, takes_order, summary)            \
     case Algorithm::name:                                                \
         Type::template run<K, I, P>(kernel, in, options, out, result);   \
         break;

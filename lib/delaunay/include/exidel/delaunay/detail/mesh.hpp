@@ -64,8 +64,13 @@ struct Mesh {
             triangles[3 * t + 2] = c;
         } else {
             t = static_cast<std::uint32_t>(triangles.size() / 3);
-            triangles.insert(triangles.end(), {a, b, c});
-            halfedges.insert(halfedges.end(), {-1, -1, -1});
+            // push_back each: inserting an initializer_list is not inlined as well.
+            triangles.push_back(a);
+            triangles.push_back(b);
+            triangles.push_back(c);
+            halfedges.push_back(-1);
+            halfedges.push_back(-1);
+            halfedges.push_back(-1);
         }
         return t;
     }
