@@ -79,7 +79,7 @@ triangulation:
                   paper's algorithm; strips use 64-point strips so merges run). The
                   "Work per insertion order" table always compares all three
   --algorithm LIST  algorithms (listed at the end), comma-separated, or 'all'
-                  (default external). Each runs in the orders above if it takes an
+                  (default all). Each runs in the orders above if it takes an
                   order; with several, every table gets an "algorithm" column
 
 stages:

@@ -326,9 +326,10 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
                                         std::string(delaunay::to_string(o)));
         }
     }
-    const std::vector<delaunay::Algorithm> algorithms =
-        options.algorithms.empty() ? std::vector<delaunay::Algorithm>{delaunay::Algorithm::external}
-                                   : options.algorithms;
+    std::vector<delaunay::Algorithm> algorithms = options.algorithms;
+    if (algorithms.empty()) {
+        for (const delaunay::AlgorithmInfo& info : delaunay::algorithms()) algorithms.push_back(info.id);
+    }
     // What the outcome tables run, and what the work table runs (every order).
     const std::vector<Method> methods = methods_of(algorithms, orders);
     const std::vector<Method> work_methods = methods_of(algorithms, all_orders);

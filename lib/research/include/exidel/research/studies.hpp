@@ -223,7 +223,7 @@ struct TriangulationOptions {
     /// Insertion orders for the outcome tables and fixtures; empty: lexicographic only
     /// (the paper's algorithm). The work table always runs all_orders.
     std::vector<delaunay::Strategy> orders;
-    /// Algorithms of the registry; empty: the external one only. Each runs in the orders
+    /// Algorithms of the registry; empty: every one. Each runs in the orders
     /// above if it takes an order (methods_of), and in the work table. With more than one,
     /// every table gets an "algorithm" column.
     std::vector<delaunay::Algorithm> algorithms;
