@@ -7,7 +7,8 @@
 //            tables and in fixture file names;
 //   Type     detail::Type, the algorithm: one header in detail/ with
 //              template <PredicateKernel K, Instrumentation I, InCirclePolicy P>
-//              static Result run(const K&, detail::SortedInput&, const Options&);
+//              static void run(const K&, const detail::SortedInput&, const Options&,
+//                              detail::MeshOutput&, Result&);
 //            over the shared mesh (detail/mesh.hpp), included by triangulate.hpp;
 //   takes_order  whether Options::strategy (--order) chooses how it runs; the studies run
 //            such an algorithm once per order;
