@@ -26,7 +26,9 @@
 // clang-format off
 #define EXIDEL_DELAUNAY_ALGORITHMS(X)                                                          \
     X(external, ExternalIncremental, true,                                                     \
-      "Cai 2025, each point outside the hull; O(n log n) expected (radial, strips)")
+      "Cai 2025, each point outside the hull; O(n log n) expected (radial, strips)")          \
+    X(randomized, RandomizedIncremental, false,                                                \
+      "de Berg et al. ch. 9: random order, history DAG, Lawson flips; O(n log n) expected")
 // clang-format on
 
 namespace exidel::delaunay {
