@@ -15,15 +15,16 @@
 // or all of them on one line, give no triangle (the mesh is marked collinear).
 //
 // Structure. Every triangle ever created has its own slot, never reused, which is also
-// its node of the history DAG: verts (three vertex ids, counter-clockwise, fixed at
-// creation), the twin of each of its half-edges, and, once it is destroyed, its children
-// (a range of one shared array; a destroyed node always has at least two, a live node
-// none). Vertex `inf` = n is the vertex at infinity. A ghost triangle is (b, a, inf) for
-// the hull edge a -> b: its half-edge b -> a is the twin of the finite hull half-edge,
-// a -> inf and inf -> b are twins of the neighbouring ghosts' half-edges, so every
-// half-edge has a twin and going from ghost to ghost follows the hull. inf is always
-// at position 2 of a ghost. The first triangle (a, b, c) and its three ghosts are the
-// four roots.
+// its node of the history DAG: three vertex ids (counter-clockwise, fixed at creation),
+// the twin of each of its half-edges, and, once it is destroyed, its children. Each
+// operation below creates its triangles in consecutive slots and gives a destroyed
+// triangle some of them as children, so children are a range of slots (first, count): a
+// destroyed node has at least two, a live node none. Vertex `inf` = n is the vertex at
+// infinity. A ghost triangle is (b, a, inf) for the hull edge a -> b, inf always at
+// position 2: its half-edge b -> a is the twin of the finite hull half-edge, a -> inf
+// and inf -> b are twins of the neighbouring ghosts' half-edges, so every half-edge has
+// a twin (the surface is closed like a sphere) and going from ghost to ghost follows the
+// hull. The first triangle (a, b, c) and its three ghosts are the four roots.
 //
 // Regions. A finite node stands for its closed triangle; a ghost node (b, a, inf) for
 // the open half-plane strictly outside its hull edge a -> b, orient2d(b, a, x) > 0. The
@@ -38,15 +39,16 @@
 //     the same half-plane;
 //   - when a point x outside the hull makes the visible ghosts die, each of them gets as
 //     children all the new triangles of x: the fan triangles on the visible chain
-//     u_0 .. u_k and the two new ghosts of u_0 -> x and x -> u_k. A point y strictly
-//     outside a dead visible edge u_i u_(i+1) is either outside the new hull, then
-//     strictly outside u_0 -> x or x -> u_k (the new hull is convex and y can only
-//     leave it across one of its new edges: the segment from y to a point of the open
-//     edge u_i u_(i+1), now interior, crosses the new boundary in the relative interior
-//     of one of these two edges for all but finitely many choices of that point), or
-//     inside it, and then in the closed triangle x u_j u_(j+1) of the cone at x whose
-//     wedge holds y: beyond the chain along the ray from x the ray has left the
-//     half-plane of edge i, to which y belongs, and a half-plane is convex.
+//     u_0 .. u_k and the two new ghosts of u_0 -> x and x -> u_k. Let y be strictly
+//     outside a dead visible edge u_i u_(i+1), in its open half-plane H. If y is outside
+//     the new hull, join it to a point z of the open edge u_i u_(i+1), which is now
+//     interior: the open segment yz lies in H, which the old hull does not meet, so it
+//     leaves the new hull across u_0 x or x u_k, and for all but finitely many z it does
+//     so transversally in the relative interior of that edge: y is strictly outside it,
+//     in that new ghost's region. If y is inside the new hull, it lies in the cone at x
+//     spanned by the chain, in the wedge of some fan triangle x u_j u_(j+1); not beyond
+//     the segment u_j u_(j+1), since the ray from x has left H there (it met the old
+//     hull) and cannot come back into a convex set: y is in that closed triangle.
 //   The fan's children are not tested one by one (k can be large: points on a circle
 //   and one far point make every later point pass through ghosts with Theta(n) fan
 //   triangles): its two ghosts are tested first, then the rays x -> u_j, which turn
@@ -54,7 +56,11 @@
 //   of y (the sign of orient2d(x, u_j, y) changes at most once along j), and the one
 //   fan triangle found is tested as usual. That is O(log k) orientations instead of k.
 // Children are created after their parents, so a descent visits increasing slots and
-// ends. With an inexact kernel no child may contain the point: location_exceeded.
+// ends. With an inexact kernel no child may contain the point: location_exceeded. The
+// descent is bound by memory latency, not by arithmetic (each step jumps to a node
+// created at a random later time): a node's vertices and children share one record, and
+// the points of the current node are kept at hand, since a child has at most one vertex
+// its parent lacks.
 //
 // Insertion of x at a leaf.
 //   - finite leaf (a, b, c), x strictly inside: three triangles (a, b, x), (b, c, x),
@@ -76,7 +82,7 @@
 // Then every edge a-b opposite x in the new finite triangles (a, b, x) is legalized
 // (Lawson), with an explicit stack: a hull edge (a ghost behind it) is legal; otherwise
 // with d the apex of (b, a, d) behind it, the edge is flipped to x-d iff x is strictly
-// inside the circle of (b, a, d), and the two edges d-a... now opposite x are pushed.
+// inside the circle of (b, a, d), and the two edges a-d, d-b, now opposite x, are pushed.
 // Every new edge at x is a Delaunay edge (the circle through x and d inside the circle
 // of (b, a, d), which held no point but x), so when the stack is empty every edge is
 // locally Delaunay and the triangulation is Delaunay. Points on a circle keep their
@@ -172,14 +178,12 @@ public:
             out.mesh.collinear = true;
             return std::nullopt;
         }
-        // About 9n triangles are created on random input (de Berg's bound, finite and
-        // ghost together); the history keeps them all.
-        const std::size_t expected = 9 * n + 16;
-        verts_.reserve(3 * expected);
+        // About 9n triangles are created on random input (de Berg's bound on the
+        // expectation; the realisation fluctuates around it), and the history keeps them
+        // all. Reserving is free until the memory is touched, so leave a margin.
+        const std::size_t expected = 10 * n + 64;
+        node_.reserve(expected);
         adj_.reserve(3 * expected);
-        child_begin_.reserve(expected);
-        child_count_.reserve(expected);
-        children_.reserve(expected);
         start();
         for (std::size_t i = 3; i < n; ++i) {
             if (auto failure = insert(static_cast<std::uint32_t>(i))) return failure;
@@ -190,7 +194,7 @@ public:
     const Counters& counters() const noexcept { return this->counters_; }
 
 private:
-    static constexpr std::uint32_t fan_bit = 0x80000000u;  // in child_count_: a fan's children
+    static constexpr std::uint32_t fan_bit = 0x80000000u;  // in Node::count: a fan's children
     static constexpr std::uint32_t none = 0xffffffffu;
     // Half-edge indices 3t + j must fit in 32 bits.
     static constexpr std::size_t max_slots = 0xffffffffu / 3;
@@ -200,11 +204,22 @@ private:
         Sign s[3];
     };
 
-    std::size_t slots() const noexcept { return child_count_.size(); }
-    bool alive(std::uint32_t t) const noexcept { return child_count_[t] == 0; }
-    bool ghost(std::uint32_t t) const noexcept { return verts_[3 * std::size_t{t} + 2] == inf_; }
+    // A slot: its triangle's vertices and its children, the slots first .. first +
+    // count - 1 (every operation creates its triangles in consecutive slots, and the
+    // children of a destroyed triangle are always some of them); count 0: alive. One
+    // record, so that a descent step finds a child's vertices and its children in the
+    // same cache line.
+    struct Node {
+        std::uint32_t v[3];
+        std::uint32_t first = 0;
+        std::uint32_t count = 0;  // with fan_bit for the ghosts destroyed by an outside point
+    };
+
+    std::size_t slots() const noexcept { return node_.size(); }
+    bool alive(std::uint32_t t) const noexcept { return node_[t].count == 0; }
+    bool ghost(std::uint32_t t) const noexcept { return node_[t].v[2] == inf_; }
     Point2 pt(std::uint32_t v) const noexcept { return pts_[v]; }
-    std::uint32_t vert(std::size_t h) const noexcept { return verts_[h]; }
+    std::uint32_t vert(std::size_t h) const noexcept { return node_[h / 3].v[h % 3]; }
 
     Sign orient(std::uint32_t a, std::uint32_t b, const Point2& x) const {
         return k_.orient2d(pts_[a], pts_[b], x);
@@ -240,30 +255,23 @@ private:
     std::uint32_t new_triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
         if (c != inf_) this->count(&Counters::triangles_created);
         const auto t = static_cast<std::uint32_t>(slots());
-        verts_.insert(verts_.end(), {a, b, c});
-        adj_.insert(adj_.end(), {none, none, none});
-        child_begin_.push_back(0);
-        child_count_.push_back(0);
+        node_.push_back(Node{{a, b, c}, 0, 0});
+        adj_.resize(adj_.size() + 3, none);
         return t;
     }
     void link(std::uint32_t a, std::uint32_t b) {
         adj_[a] = b;
         adj_[b] = a;
     }
-    /// The `count` slots from `first` (new triangles of one operation) as a children range.
-    std::uint32_t push_children(std::uint32_t first, std::uint32_t count) {
-        const auto begin = static_cast<std::uint32_t>(children_.size());
-        for (std::uint32_t c = 0; c < count; ++c) children_.push_back(first + c);
-        return begin;
-    }
-    void kill(std::uint32_t t, std::uint32_t begin, std::uint32_t count, bool fan = false) {
+    /// Destroys t; its children are the `count` slots from `first`.
+    void kill(std::uint32_t t, std::uint32_t first, std::uint32_t count, bool fan = false) {
         if (!ghost(t)) this->count(&Counters::triangles_destroyed);
-        child_begin_[t] = begin;
-        child_count_[t] = count | (fan ? fan_bit : 0u);
+        node_[t].first = first;
+        node_[t].count = count | (fan ? fan_bit : 0u);
     }
     bool room(std::size_t more) const noexcept { return slots() + more <= max_slots; }
 
-    // The first triangle (0, 1, 2) and its three ghosts, the roots (children_[0..3]).
+    // The first triangle (0, 1, 2) and its three ghosts, the roots (slots 0 .. 3).
     void start() {
         const std::uint32_t a = 0, b = 1, c = 2;
         new_triangle(a, b, c);          // 0: a->b, b->c, c->a
@@ -276,21 +284,41 @@ private:
         link(4, 11);   // a->inf with inf->a
         link(7, 5);    // b->inf with inf->b
         link(10, 8);   // c->inf with inf->c
-        push_children(0, 4);
         hull_size_ = 3;
     }
 
+    // The points a descent has at hand: the current node's three vertices (slots 0-2; the
+    // vertex at infinity has none) and the last other one read (slot 3). A child shares all
+    // but at most one vertex with its parent (a split or a flip adds one, a fan adds its
+    // apex and chain, read by the binary search), so a step reads about one point from
+    // the big array instead of three per child tested: the descent is memory-bound.
+    struct Descent {
+        std::uint32_t id[4] = {none, none, none, none};
+        Point2 p[4] = {};
+    };
+    Point2 point(Descent& d, std::uint32_t v) const {
+        for (std::size_t j = 0; j < 4; ++j) {
+            if (d.id[j] == v) return d.p[j];
+        }
+        d.id[3] = v;
+        d.p[3] = pts_[v];
+        return d.p[3];
+    }
+
     /// Whether triangle t's region contains x; for a finite t, `signs` gets the three
-    /// orientations (when none is negative).
-    bool contains(std::uint32_t t, const Point2& x, Signs& signs) {
+    /// orientations (when none is negative). `tp` gets t's points (two for a ghost).
+    bool contains(Descent& d, std::uint32_t t, const Point2& x, Signs& signs, Point2 (&tp)[3]) {
         const std::size_t b = 3 * std::size_t{t};
+        tp[0] = point(d, vert(b));
+        tp[1] = point(d, vert(b + 1));
         if (ghost(t)) {
             this->count(&Counters::location_orientations);
-            return orient(vert(b), vert(b + 1), x) == Sign::positive;
+            return k_.orient2d(tp[0], tp[1], x) == Sign::positive;
         }
+        tp[2] = point(d, vert(b + 2));
         for (std::size_t j = 0; j < 3; ++j) {
             this->count(&Counters::location_orientations);
-            signs.s[j] = orient(vert(b + j), vert(b + (j + 1) % 3), x);
+            signs.s[j] = k_.orient2d(tp[j], tp[(j + 1) % 3], x);
             if (signs.s[j] == Sign::negative) return false;
         }
         return true;
@@ -298,23 +326,24 @@ private:
 
     /// The child of a dead outside ghost whose region contains x: the fan's two ghosts,
     /// else the fan triangle whose wedge at the apex holds x (binary search).
-    std::uint32_t fan_child(std::uint32_t begin, std::uint32_t count, const Point2& x, Signs& signs) {
+    std::uint32_t fan_child(Descent& d, std::uint32_t first, std::uint32_t count, const Point2& x,
+                            Signs& signs, Point2 (&tp)[3]) {
         const std::uint32_t k = count - 2;  // fan triangles (u_(j+1), u_j, apex), j < k
-        const std::uint32_t* c = &children_[begin];
-        if (contains(c[k], x, signs)) return c[k];
-        if (contains(c[k + 1], x, signs)) return c[k + 1];
-        const std::uint32_t apex = vert(3 * std::size_t{c[0]} + 2);
+        if (contains(d, first + k, x, signs, tp)) return first + k;
+        if (contains(d, first + k + 1, x, signs, tp)) return first + k + 1;
+        const Point2 apex = point(d, vert(3 * std::size_t{first} + 2));
         std::uint32_t lo = 0, hi = k;  // orient(apex, u_lo, x) <= 0 <= orient(apex, u_hi, x)
         while (hi - lo > 1) {
             const std::uint32_t mid = lo + (hi - lo) / 2;
             this->count(&Counters::location_orientations);
-            if (orient(apex, vert(3 * std::size_t{c[mid]} + 1), x) == Sign::positive) {
+            const Point2 u = point(d, vert(3 * std::size_t{first + mid} + 1));
+            if (k_.orient2d(apex, u, x) == Sign::positive) {
                 hi = mid;
             } else {
                 lo = mid;
             }
         }
-        return contains(c[lo], x, signs) ? c[lo] : none;
+        return contains(d, first + lo, x, signs, tp) ? first + lo : none;
     }
 
     struct Leaf {
@@ -325,17 +354,18 @@ private:
     /// Descends the DAG from the roots to the live triangle whose region contains x.
     std::optional<Failure> locate(std::uint32_t i, Leaf& leaf) {
         const Point2 x = pt(i);
-        std::uint32_t begin = 0, count = 4;  // the roots
-        bool fan = false;
+        Descent d;
+        Point2 tp[3];
+        std::uint32_t first = 0, children = 4;  // the roots
         std::uint32_t node = none;
         for (std::size_t steps = 0;; ++steps) {
             std::uint32_t found = none;
-            if (fan) {
-                found = fan_child(begin, count, x, leaf.signs);
+            if ((children & fan_bit) != 0) {
+                found = fan_child(d, first, children & ~fan_bit, x, leaf.signs, tp);
             } else {
-                for (std::uint32_t c = 0; c < count; ++c) {
-                    if (contains(children_[begin + c], x, leaf.signs)) {
-                        found = children_[begin + c];
+                for (std::uint32_t c = first; c < first + children; ++c) {
+                    if (contains(d, c, x, leaf.signs, tp)) {
+                        found = c;
                         break;
                     }
                 }
@@ -348,16 +378,21 @@ private:
             }
             this->count(&Counters::location_steps);
             node = found;
-            if (alive(node)) {
+            const Node& at = node_[node];
+            if (at.count == 0) {
                 leaf.t = node;
                 return std::nullopt;
             }
             if (steps > slots()) {
                 return fail(FailureKind::location_exceeded, i, "the descent did not end");
             }
-            begin = child_begin_[node];
-            count = child_count_[node] & ~fan_bit;
-            fan = (child_count_[node] & fan_bit) != 0;
+            for (std::size_t j = 0; j < 3; ++j) {
+                d.id[j] = at.v[j];
+                d.p[j] = tp[j];
+            }
+            if (at.v[2] == inf_) d.id[2] = none;
+            first = at.first;
+            children = at.count;
         }
     }
 
@@ -403,7 +438,7 @@ private:
             link(T + 1, U + 2);  // v_j+1 -> x with x -> v_j+1
             stack_.push_back(T);
         }
-        kill(t, push_children(first, 3), 3);
+        kill(t, first, 3);
         return std::nullopt;
     }
 
@@ -444,8 +479,8 @@ private:
             stack_.push_back(3 * C);
             stack_.push_back(3 * D);
         }
-        kill(t, push_children(A, 2), 2);
-        kill(t2, push_children(A + 2, 2), 2);
+        kill(t, A, 2);
+        kill(t2, A + 2, 2);
         return std::nullopt;
     }
 
@@ -502,8 +537,7 @@ private:
         link(3 * L + 1, adj_[3 * g_first + 1]);  // u_0 -> inf
         link(3 * U + 2, adj_[3 * g_last + 2]);   // inf -> u_k
         link(3 * L + 2, 3 * U + 1);              // inf -> x with x -> inf
-        const std::uint32_t begin = push_children(first, k + 2);
-        for (const std::uint32_t g : chain_) kill(g, begin, k + 2, true);
+        for (const std::uint32_t g : chain_) kill(g, first, k + 2, true);
         hull_size_ = hull_size_ + 2 - k;
         return std::nullopt;
     }
@@ -553,9 +587,8 @@ private:
             link(3 * N + 1, 3 * M + 2);  // d -> x with x -> d
             link(3 * N + 2, o_xa);
             link(3 * M + 1, o_bx);
-            const std::uint32_t begin = push_children(N, 2);
-            kill(t, begin, 2);
-            kill(t2, begin, 2);
+            kill(t, N, 2);
+            kill(t2, N, 2);
             stack_.push_back(3 * N);
             stack_.push_back(3 * M);
         }
@@ -580,10 +613,10 @@ private:
         auto inconsistent = [](std::string what) {
             return Failure{FailureKind::result_inconsistent, no_index, no_index, std::move(what)};
         };
-        // child_begin_ of a live slot is unused: it becomes the slot's new number.
+        // Node::first of a live slot is unused: it becomes the slot's new number.
         std::uint32_t live = 0;
         for (std::uint32_t t = 0; t < slots(); ++t) {
-            if (alive(t) && !ghost(t)) child_begin_[t] = live++;
+            if (alive(t) && !ghost(t)) node_[t].first = live++;
         }
         mesh.triangles.resize(3 * std::size_t{live});
         mesh.halfedges.resize(3 * std::size_t{live});
@@ -597,17 +630,17 @@ private:
                     return inconsistent("the ghost triangles do not form the hull");
                 }
                 mesh.set_hull_next(u, v);
-                mesh.hull_edge[u] = static_cast<std::int32_t>(3 * child_begin_[f] + h % 3);
+                mesh.hull_edge[u] = static_cast<std::int32_t>(3 * node_[f].first + h % 3);
                 ++mesh.hull_size;
                 continue;
             }
-            const std::size_t u = child_begin_[t];
+            const std::size_t u = node_[t].first;
             for (std::uint32_t j = 0; j < 3; ++j) {
                 const std::uint32_t h = adj_[3 * t + j], f = h / 3;
                 mesh.triangles[3 * u + j] = vert(3 * t + j);
                 if (!alive(f)) return inconsistent("a live triangle borders a destroyed one");
                 mesh.halfedges[3 * u + j] =
-                    ghost(f) ? -1 : static_cast<std::int32_t>(3 * child_begin_[f] + h % 3);
+                    ghost(f) ? -1 : static_cast<std::int32_t>(3 * node_[f].first + h % 3);
             }
         }
         for (std::size_t j = 0; j < n; ++j) {
@@ -622,9 +655,8 @@ private:
     std::vector<std::uint32_t> input_of_;   // insertion position -> input index
     std::vector<std::uint32_t> order_;      // insertion position -> sorted position
     std::uint32_t inf_ = 0;
-    std::vector<std::uint32_t> verts_, adj_;             // 3 per slot
-    std::vector<std::uint32_t> child_begin_, child_count_;  // 1 per slot; count 0: alive
-    std::vector<std::uint32_t> children_;
+    std::vector<std::uint32_t> adj_;                     // 3 per slot
+    std::vector<Node> node_;                             // 1 per slot
     std::vector<std::uint32_t> stack_;  // half-edges opposite the new point, to legalize
     std::vector<std::uint32_t> chain_;  // the visible ghosts, in hull order
     std::size_t hull_size_ = 0;
