@@ -30,7 +30,9 @@
     X(external, "external", ExternalIncremental, true,                                         \
       "Cai 2025, each point outside the hull; O(n log n) expected (radial, strips)")          \
     X(bowyer_watson, "bowyer-watson", BowyerWatson, false,                                     \
-      "BRIO order, walk to the point, cavity of conflicting triangles re-fanned; O(n log n) expected")
+      "BRIO order, walk to the point, cavity of conflicting triangles re-fanned; O(n log n) expected") \
+    X(randomized, "randomized", RandomizedIncremental, false,                                  \
+      "de Berg et al. ch. 9: random order, history DAG, Lawson flips; O(n log n) expected")
 // clang-format on
 
 namespace exidel::delaunay {

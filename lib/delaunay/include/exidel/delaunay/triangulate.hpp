@@ -17,6 +17,7 @@
 #include "exidel/delaunay/detail/bowyer_watson.hpp"
 #include "exidel/delaunay/detail/external_incremental.hpp"
 #include "exidel/delaunay/detail/mesh.hpp"
+#include "exidel/delaunay/detail/randomized.hpp"
 #include "exidel/delaunay/external.hpp"
 #include "exidel/delaunay/result.hpp"
 #include "exidel/predicates/kernel.hpp"
