@@ -58,9 +58,9 @@
 // Children are created after their parents, so a descent visits increasing slots and
 // ends. With an inexact kernel no child may contain the point: location_exceeded. The
 // descent is bound by memory latency, not by arithmetic (each step jumps to a node
-// created at a random later time): a node's vertices and children share one record, and
-// the points of the current node are kept at hand, since a child has at most one vertex
-// its parent lacks.
+// created at a random later time): a node's vertices and children share one record, the
+// points of the current node are kept at hand, since a child has at most one vertex its
+// parent lacks, and the grandchildren are prefetched while the children are tested.
 //
 // Insertion of x at a leaf.
 //   - finite leaf (a, b, c), x strictly inside: three triangles (a, b, x), (b, c, x),
@@ -287,8 +287,8 @@ private:
         hull_size_ = 3;
     }
 
-    // The points a descent has at hand: the current node's three vertices (slots 0-2; the
-    // vertex at infinity has none) and the last other one read (slot 3). A child shares all
+    // The points a descent has at hand: the current node's three vertices (entries 0-2; the
+    // vertex at infinity has none) and the last other one read (entry 3). A child shares all
     // but at most one vertex with its parent (a split or a flip adds one, a fan adds its
     // apex and chain, read by the binary search), so a step reads about one point from
     // the big array instead of three per child tested: the descent is memory-bound.
@@ -351,6 +351,12 @@ private:
         Signs signs;
     };
 
+    static void prefetch([[maybe_unused]] const void* p) noexcept {
+#if defined(__GNUC__)
+        __builtin_prefetch(p);
+#endif
+    }
+
     /// Descends the DAG from the roots to the live triangle whose region contains x.
     std::optional<Failure> locate(std::uint32_t i, Leaf& leaf) {
         const Point2 x = pt(i);
@@ -360,6 +366,13 @@ private:
         std::uint32_t node = none;
         for (std::size_t steps = 0;; ++steps) {
             std::uint32_t found = none;
+            if ((children & fan_bit) == 0) {
+                // The next step reads the children of the child chosen now: ask for all
+                // of them while the orientations decide.
+                for (std::uint32_t c = first; c < first + children; ++c) {
+                    if (node_[c].count != 0) prefetch(&node_[node_[c].first]);
+                }
+            }
             if ((children & fan_bit) != 0) {
                 found = fan_child(d, first, children & ~fan_bit, x, leaf.signs, tp);
             } else {
