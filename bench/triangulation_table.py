@@ -199,6 +199,22 @@ def goals(rows, out):
               f"{verdict(ok)} ({detail})\n")
     for w in worse:
         out.write(f"  - above CGAL: {w}\n")
+    # 5. Issue 21: the algorithms that locate their points.
+    nlogn = 10 * math.log(1e6) / math.log(1e5)
+    for impl, bound in (("adaptive-bowyer-watson-t1", 1.0), ("adaptive-randomized-t1", 3.0)):
+        r = ratio_to_cgal(rows, "uniform", 1_000_000, impl)
+        ok = None if r is None else r <= bound
+        out.write(f"- {impl} on 10^6 uniform <= {bound}x CGAL time: "
+                  f"{verdict(ok)} ({'no data' if r is None else f'{r:.2f}x'})\n")
+        growth = []
+        for inp in ORDER:
+            a, b = rows.get((inp, 100_000, impl), {}), rows.get((inp, 1_000_000, impl), {})
+            if a.get("ms") and b.get("ms") is not None:
+                growth.append((b["ms"] / a["ms"], inp))
+        if growth:
+            g, inp = max(growth)
+            out.write(f"  - {impl} never quadratic (time from 10^5 to 10^6 at most x{2 * nlogn:.0f}, "
+                      f"n log n predicts x{nlogn:.1f}): {verdict(g <= 2 * nlogn)} (worst x{g:.1f}, {inp})\n")
 
 
 def context(report, rows, out):

@@ -115,8 +115,9 @@ Options:
                           status 1, findings on standard error, no output written
       --stats             print one JSON object on standard error, also when the
                           triangulation fails: sizes, kernel, "algorithm",
-                          "strategy" (the order that ran), "strips", "threads" (the
-                          threads that worked: 1 unless strips ran), the algorithm's
+                          "strategy" (the order that ran; null for an algorithm
+                          without orders), "strips", "threads" (the threads that
+                          worked: 1 unless strips ran), the algorithm's
                           counters, "failure" (null or its kind and message) and the
                           times "read_ms", "triangulate_ms" (the triangulation
                           alone), "certify_ms", "write_ms" and "total_ms" (from
@@ -210,6 +211,13 @@ std::string_view failure_meaning(delaunay::FailureKind kind) {
     }
 }
 
+bool takes_order(delaunay::Algorithm a) {
+    for (const delaunay::AlgorithmInfo& info : delaunay::algorithms()) {
+        if (info.id == a) return info.takes_order;
+    }
+    return false;
+}
+
 // The time spent in each step, in milliseconds.
 struct Times {
     double read = 0, triangulate = 0, certify = 0, write = 0, total = 0;
@@ -243,7 +251,9 @@ void print_stats(std::ostream& err, std::size_t points, const delaunay::Result& 
         {"kernel", kernel},
         {"incircle", policy_name(o.incircle)},
         {"algorithm", delaunay::to_string(r.algorithm)},
-        {"strategy", delaunay::to_string(r.strategy)},
+        // null for an algorithm that takes no order (it runs as it runs).
+        {"strategy", takes_order(r.algorithm) ? nlohmann::ordered_json(delaunay::to_string(r.strategy))
+                                              : nlohmann::ordered_json()},
         {"strips", r.strips},
         {"threads", threads},
         {"instrumentation", "counters"},

@@ -88,20 +88,20 @@ void check_both_policies(const std::vector<Point2>& pts) {
 // The order is a permutation, fixed by the seed on every platform (own Fisher-Yates and
 // splitmix64, nothing of the standard library's unspecified algorithms).
 TEST(RandomizedOrder, IsAFixedPermutation) {
-    const auto p = rd::random_permutation(1000, rd::randomized_seed);
+    const auto p = rd::random_order(1000, rd::randomized_seed);
     std::vector<std::uint32_t> sorted = p;
     std::sort(sorted.begin(), sorted.end());
     std::vector<std::uint32_t> identity(1000);
     std::iota(identity.begin(), identity.end(), 0u);
     EXPECT_EQ(sorted, identity);
     EXPECT_NE(p, identity);
-    EXPECT_EQ(rd::random_permutation(1000, rd::randomized_seed), p);
+    EXPECT_EQ(rd::random_order(1000, rd::randomized_seed), p);
     // splitmix64's published first outputs from state 0.
-    std::uint64_t state = 0;
-    EXPECT_EQ(rd::splitmix64(state), 0xe220a8397b1dcdafu);
-    EXPECT_EQ(rd::splitmix64(state), 0x6e789e6aa1b965f4u);
-    EXPECT_EQ(rd::random_permutation(0, 1), std::vector<std::uint32_t>{});
-    EXPECT_EQ(rd::random_permutation(1, 1), std::vector<std::uint32_t>{0});
+    rd::SplitMix64 rng{0};
+    EXPECT_EQ(rng.next(), 0xe220a8397b1dcdafu);
+    EXPECT_EQ(rng.next(), 0x6e789e6aa1b965f4u);
+    EXPECT_EQ(rd::random_order(0, 1), std::vector<std::uint32_t>{});
+    EXPECT_EQ(rd::random_order(1, 1), std::vector<std::uint32_t>{0});
 }
 
 TEST(RandomizedOrder, SameArraysOnEveryRun) {
@@ -306,11 +306,11 @@ TEST(RandomizedFixtures, LocationThroughALargeFanStaysCheap) {
 struct LyingKernel {
     enum Mode { positive, negative, zero, random, random_orient, always_flip };
     Mode mode = positive;
-    mutable std::uint64_t state = 1;
+    mutable rd::SplitMix64 rng{1};
     static constexpr bool is_exact = false;
 
     Sign coin() const {
-        switch (rd::splitmix64(state) % 3) {
+        switch (rng.next() % 3) {
             case 0: return Sign::negative;
             case 1: return Sign::zero;
             default: return Sign::positive;
@@ -344,7 +344,7 @@ RC_GTEST_PROP(RandomizedInconsistentKernel, ATypedFailureOrAResultNeverACrash, (
     k.mode = *rc::gen::element(LyingKernel::positive, LyingKernel::negative, LyingKernel::zero,
                                LyingKernel::random, LyingKernel::random, LyingKernel::random_orient,
                                LyingKernel::always_flip);
-    k.state = *rc::gen::arbitrary<std::uint64_t>();
+    k.rng.state = *rc::gen::arbitrary<std::uint64_t>();
     const InCirclePolicy policy = *rc::gen::element(InCirclePolicy::determinant, InCirclePolicy::cosine);
     const Result r = triangulate<Instrumentation::counters>(s.points, k, randomized(policy));
     RC_TAG(r.ok() ? std::string("ok") : std::string(to_string(r.failure->kind)));

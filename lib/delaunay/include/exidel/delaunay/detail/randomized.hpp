@@ -120,6 +120,7 @@
 #include <utility>
 #include <vector>
 
+#include "exidel/delaunay/detail/brio.hpp"
 #include "exidel/delaunay/detail/counting.hpp"
 #include "exidel/delaunay/detail/mesh.hpp"
 #include "exidel/delaunay/result.hpp"
@@ -127,32 +128,9 @@
 
 namespace exidel::delaunay::detail {
 
-/// splitmix64 (Steele, Lea, Flood 2014): the next 64-bit value of the sequence `state`
-/// walks.
-constexpr std::uint64_t splitmix64(std::uint64_t& state) noexcept {
-    state += 0x9e3779b97f4a7c15u;
-    std::uint64_t z = state;
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-    return z ^ (z >> 31);
-}
-
-/// The seed of the randomized algorithm's insertion order: fixed, so that its output is
-/// deterministic.
+/// The seed of the randomized algorithm's insertion order (brio.hpp's random_order):
+/// fixed, so that its output is deterministic.
 inline constexpr std::uint64_t randomized_seed = 0x0e1de1u;
-
-/// A uniformly random permutation of 0 .. n-1 (Fisher-Yates; the modulo bias is below
-/// n / 2^64), the same for a seed on every platform.
-inline std::vector<std::uint32_t> random_permutation(std::size_t n, std::uint64_t seed) {
-    std::vector<std::uint32_t> order(n);
-    for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<std::uint32_t>(i);
-    std::uint64_t state = seed;
-    for (std::size_t i = n; i > 1; --i) {
-        const auto j = static_cast<std::size_t>(splitmix64(state) % i);
-        std::swap(order[i - 1], order[j]);
-    }
-    return order;
-}
 
 template <PredicateKernel K, Instrumentation I, InCirclePolicy P>
 class RandomizedBuilder : Counting<I> {
@@ -160,7 +138,7 @@ public:
     /// The points of `in` in random order (see above).
     RandomizedBuilder(const K& kernel, const SortedInput& in) : k_(kernel) {
         const std::size_t n = in.points.size();
-        order_ = random_permutation(n, randomized_seed);
+        order_ = random_order(n, randomized_seed);
         pts_.resize(n);
         input_of_.resize(n);
         for (std::size_t j = 0; j < n; ++j) {
