@@ -204,19 +204,13 @@ private:
         }
         const Point2 x = pts_[tris[shared]], y = pts_[tris[next_halfedge(shared)]];
         const Point2 d = pts_[tris[prev_halfedge(shared)]];  // on the left of x -> y
-        if constexpr (P == InCirclePolicy::determinant) {
-            this->count(&Counters::incircle_tests);
-            this->check_theorem1(x, y, d, p);
-            return k_.incircle(x, y, d, p) == Sign::positive;
-        } else {
+        if constexpr (P == InCirclePolicy::cosine) {
             // Not strictly on the far side of x -> y: in conflict by the nesting argument
             // above (exact kernels); otherwise Theorem 1 holds and the cosine test decides.
             this->count(&Counters::cavity_orientations);
             if (k_.orient2d(x, y, p) != Sign::negative) return true;
-            this->count(&Counters::incircle_tests);
-            this->check_theorem1(x, y, d, p);
-            return k_.incircle_cosine(x, y, d, p) == Sign::positive;
         }
+        return this->template in_circle_by_policy<P>(k_, x, y, d, p);
     }
 
     // Marks of the cavity search, per triangle slot: 2 stamp in the cavity, 2 stamp + 1

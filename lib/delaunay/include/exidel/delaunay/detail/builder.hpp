@@ -105,14 +105,7 @@ private:
     /// border edge a->b (counter-clockwise: c on the left of a->b), p the new point on
     /// the right. True: p strictly inside the circle through a, b, c.
     bool in_circle(Point2 a, Point2 b, Point2 c, Point2 p) {
-        this->count(&Counters::incircle_tests);
-        this->check_theorem1(a, b, c, p);
-        if constexpr (P == InCirclePolicy::determinant) {
-            return k_.incircle(a, b, c, p) == Sign::positive;
-        } else {
-            // Paper roles: B = a, C = b, D = c (opposite vertex), A = p (new point).
-            return k_.incircle_cosine(a, b, c, p) == Sign::positive;
-        }
+        return this->template in_circle_by_policy<P>(k_, a, b, c, p);
     }
 
     std::uint32_t new_triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {

@@ -31,6 +31,21 @@ struct Counting {
             if (!theorem1_holds(a, b, c, p)) ++counters_.theorem1_violations;
         }
     }
+
+    /// The in-circle question as every algorithm asks it, counted and checked: is p
+    /// strictly inside the circle of the counter-clockwise triangle abc, p being across
+    /// edge a -> b from c? Decided by the policy P: the determinant, or the paper's
+    /// cosine test with its roles B = a, C = b (the edge), D = c, A = p.
+    template <InCirclePolicy P, class K>
+    bool in_circle_by_policy(const K& k, Point2 a, Point2 b, Point2 c, Point2 p) {
+        count(&Counters::incircle_tests);
+        check_theorem1(a, b, c, p);
+        if constexpr (P == InCirclePolicy::determinant) {
+            return k.incircle(a, b, c, p) == Sign::positive;
+        } else {
+            return k.incircle_cosine(a, b, c, p) == Sign::positive;
+        }
+    }
 };
 
 }  // namespace exidel::delaunay::detail

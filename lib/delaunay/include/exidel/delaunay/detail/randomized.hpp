@@ -537,14 +537,7 @@ private:
     /// circle of (b, a, d), the counter-clockwise triangle behind edge b -> a, with x on
     /// the right of b -> a (the roles of Builder::in_circle).
     bool in_circle(Point2 b, Point2 a, Point2 d, Point2 x) {
-        this->count(&Counters::incircle_tests);
-        this->check_theorem1(b, a, d, x);
-        if constexpr (P == InCirclePolicy::determinant) {
-            return k_.incircle(b, a, d, x) == Sign::positive;
-        } else {
-            // Paper roles: B = b, C = a (the edge), D = d (opposite vertex), A = x.
-            return k_.incircle_cosine(b, a, d, x) == Sign::positive;
-        }
+        return this->template in_circle_by_policy<P>(k_, b, a, d, x);
     }
 
     // Lawson's flips of the edges opposite x (half-edge 0 of a triangle (a, b, x)).
