@@ -7,12 +7,14 @@
 #include <rapidcheck/gtest.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <ostream>
 #include <set>
 #include <string>
 #include <vector>
 
 #include "delaunay_support.hpp"
+#include "lying_kernel.hpp"
 #include "exidel/delaunay/algorithms.hpp"
 #include "exidel/delaunay/certify.hpp"
 #include "exidel/delaunay/triangulate.hpp"
@@ -96,6 +98,38 @@ TEST_P(EveryAlgorithm, DoubleKernelReturnsAResultOrATypedFailure) {
             RC_ASSERT(r.triangulation.vertex_of_input.size() == s.points.size());
         } else {
             RC_ASSERT(!r.failure->message.empty());
+        }
+    }));
+}
+
+// Whatever a kernel answers, even at random: ok() with arrays of the right shape, or a
+// failure of a kind that blames the kernel, with a message.
+TEST_P(EveryAlgorithm, LyingKernelGivesAResultOrATypedFailure) {
+    using exidel::test::LyingKernel;
+    EXPECT_TRUE(rc::check(std::string(GetParam().name) + ", lying", [&] {
+        const auto s = *test::gen_point_set(120);
+        LyingKernel k;
+        k.mode = *rc::gen::element(LyingKernel::positive, LyingKernel::negative,
+                                   LyingKernel::zero, LyingKernel::random, LyingKernel::random,
+                                   LyingKernel::random_orient, LyingKernel::always_flip);
+        k.rng.state = *rc::gen::arbitrary<std::uint64_t>();
+        const Options o = *gen_options(GetParam());
+        const Result r = triangulate<Instrumentation::counters>(s.points, k, o);
+        RC_TAG(r.ok() ? std::string("ok") : std::string(to_string(r.failure->kind)));
+        if (r.ok()) {
+            const Triangulation& t = r.triangulation;
+            RC_ASSERT(t.triangles.size() == t.halfedges.size());
+            RC_ASSERT(t.triangles.size() % 3 == 0);
+            RC_ASSERT(t.vertex_of_input.size() == s.points.size());
+            for (const std::uint32_t v : t.triangles) RC_ASSERT(v < s.points.size());
+            for (const std::int32_t h : t.halfedges) {
+                RC_ASSERT(h < static_cast<std::int32_t>(t.halfedges.size()));
+            }
+        } else {
+            RC_ASSERT(!r.failure->message.empty());
+            RC_ASSERT(r.failure->kind != FailureKind::non_finite_input);
+            RC_ASSERT(r.failure->kind != FailureKind::unknown_algorithm);
+            RC_ASSERT(r.failure->kind != FailureKind::too_many_points);
         }
     }));
 }

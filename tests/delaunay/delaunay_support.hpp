@@ -125,6 +125,19 @@ inline void showValue(const PointSet& s, std::ostream& os) {
 }
 
 /// n points from a standard normal distribution (seeded; the generator shrinks the seed).
+/// n points uniform in the unit square, the same on every platform (the 53 high bits of
+/// mt19937_64, whose sequence the standard fixes; uniform_real_distribution is not).
+inline std::vector<Point2> uniform_points(std::size_t n, std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    const auto unit = [&] { return static_cast<double>(rng() >> 11) * 0x1p-53; };
+    std::vector<Point2> p(n);
+    for (Point2& q : p) {
+        q.x = unit();
+        q.y = unit();
+    }
+    return p;
+}
+
 inline std::vector<Point2> gaussian_points(std::uint64_t seed, std::size_t n) {
     std::mt19937_64 rng(seed);
     std::normal_distribution<double> d(0.0, 1.0);

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "delaunay_support.hpp"
+#include "lying_kernel.hpp"
 #include "exidel/delaunay/certify.hpp"
 #include "exidel/delaunay/detail/randomized.hpp"
 #include "exidel/delaunay/triangulate.hpp"
@@ -26,6 +27,8 @@ namespace {
 using namespace exidel;
 using namespace exidel::delaunay;
 using exidel::test::EdgeSets;
+using exidel::test::LyingKernel;
+using exidel::test::uniform_points;
 namespace rd = exidel::delaunay::detail;
 
 Options randomized(InCirclePolicy policy = InCirclePolicy::determinant) {
@@ -33,19 +36,6 @@ Options randomized(InCirclePolicy policy = InCirclePolicy::determinant) {
     o.algorithm = Algorithm::randomized;
     o.incircle = policy;
     return o;
-}
-
-/// n points uniform in the unit square, the same on every platform (the 53 high bits of
-/// mt19937_64, whose sequence the standard fixes; uniform_real_distribution is not).
-std::vector<Point2> uniform_points(std::size_t n, std::uint64_t seed) {
-    std::mt19937_64 rng(seed);
-    const auto unit = [&] { return static_cast<double>(rng() >> 11) * 0x1p-53; };
-    std::vector<Point2> p(n);
-    for (Point2& q : p) {
-        q.x = unit();
-        q.y = unit();
-    }
-    return p;
 }
 
 /// Runs `randomized` with Theorem 1 checked, certifies the result and compares it with
@@ -301,67 +291,9 @@ TEST(RandomizedFixtures, LocationThroughALargeFanStaysCheap) {
 
 // --- kernels that lie --------------------------------------------------------------------
 
-/// A kernel whose every answer is chosen by `mode`: constant signs, or random ones (a
-/// splitmix64 stream, so that the same answer never comes twice in a row by design).
-struct LyingKernel {
-    enum Mode { positive, negative, zero, random, random_orient, always_flip };
-    Mode mode = positive;
-    mutable rd::SplitMix64 rng{1};
-    static constexpr bool is_exact = false;
 
-    Sign coin() const {
-        switch (rng.next() % 3) {
-            case 0: return Sign::negative;
-            case 1: return Sign::zero;
-            default: return Sign::positive;
-        }
-    }
-    Sign constant() const {
-        return mode == negative ? Sign::negative : mode == zero ? Sign::zero : Sign::positive;
-    }
-    Sign orient2d(Point2 a, Point2 b, Point2 c) const {
-        if (mode == always_flip) return AdaptiveKernel{}.orient2d(a, b, c);
-        return mode == random || mode == random_orient ? coin() : constant();
-    }
-    Sign incircle(Point2 a, Point2 b, Point2 c, Point2 d) const {
-        if (mode == always_flip) return Sign::positive;
-        if (mode == random_orient) return AdaptiveKernel{}.incircle(a, b, c, d);
-        return mode == random ? coin() : constant();
-    }
-    Sign incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d) const {
-        return incircle(a, b, c, d);
-    }
-    Sign compare_distance(Point2, Point2, Point2) const { return mode == random ? coin() : constant(); }
-    std::string name() const { return "lying"; }
-};
-static_assert(PredicateKernel<LyingKernel>);
-
-// Whatever the kernel answers: ok() with arrays of the right shape, or a failure of a
-// kind that blames the kernel, with a message naming the insertion.
-RC_GTEST_PROP(RandomizedInconsistentKernel, ATypedFailureOrAResultNeverACrash, ()) {
-    const auto s = *test::gen_point_set(120);
-    LyingKernel k;
-    k.mode = *rc::gen::element(LyingKernel::positive, LyingKernel::negative, LyingKernel::zero,
-                               LyingKernel::random, LyingKernel::random, LyingKernel::random_orient,
-                               LyingKernel::always_flip);
-    k.rng.state = *rc::gen::arbitrary<std::uint64_t>();
-    const InCirclePolicy policy = *rc::gen::element(InCirclePolicy::determinant, InCirclePolicy::cosine);
-    const Result r = triangulate<Instrumentation::counters>(s.points, k, randomized(policy));
-    RC_TAG(r.ok() ? std::string("ok") : std::string(to_string(r.failure->kind)));
-    if (r.ok()) {
-        const Triangulation& t = r.triangulation;
-        RC_ASSERT(t.triangles.size() == t.halfedges.size());
-        RC_ASSERT(t.triangles.size() % 3 == 0);
-        RC_ASSERT(t.vertex_of_input.size() == s.points.size());
-        for (const std::uint32_t v : t.triangles) RC_ASSERT(v < s.points.size());
-        for (const std::int32_t h : t.halfedges) RC_ASSERT(h < std::int32_t(t.halfedges.size()));
-    } else {
-        RC_ASSERT(!r.failure->message.empty());
-        RC_ASSERT(r.failure->kind != FailureKind::non_finite_input);
-        RC_ASSERT(r.failure->kind != FailureKind::unknown_algorithm);
-        RC_ASSERT(r.failure->kind != FailureKind::too_many_points);
-    }
-}
+// Whatever the kernel answers, a result or a typed failure: algorithms_test.cpp,
+// EveryAlgorithm.LyingKernelGivesAResultOrATypedFailure.
 
 // Named outcomes: a kernel that calls every point inside every circle makes each
 // insertion flip until the bound; one that calls everything collinear gives the chain.

@@ -32,7 +32,15 @@
     X(bowyer_watson, "bowyer-watson", BowyerWatson, false,                                     \
       "BRIO order, walk to the point, cavity of conflicting triangles re-fanned; O(n log n) expected") \
     X(randomized, "randomized", RandomizedIncremental, false,                                  \
-      "de Berg et al. ch. 9: random order, history DAG, Lawson flips; O(n log n) expected")
+      "de Berg et al. ch. 9: random order, history DAG, Lawson flips; O(n log n) expected") \
+    X(lawson, "lawson", Lawson, false,                                                         \
+      "Lawson 1977: the sorted fan, then flips until no edge is illegal; O(n^2) flips worst case") \
+    X(sweep_hull, "sweep-hull", SweepHull, false,                                              \
+      "Sinclair's s-hull: exact radial order, fan to the visible hull, Lawson flips; O(n log n)") \
+    X(divide_and_conquer, "divide-and-conquer", DivideAndConquer, false,                       \
+      "Guibas-Stolfi: vertical cuts down to triangles, zipper merges; O(n log n)")          \
+    X(dwyer, "dwyer", Dwyer, false,                                                            \
+      "Guibas-Stolfi with Dwyer's alternating cuts (Triangle's default); O(n log n), ~n merge work on uniform")
 // clang-format on
 
 namespace exidel::delaunay {

@@ -15,9 +15,12 @@
 
 #include "exidel/delaunay/algorithms.hpp"
 #include "exidel/delaunay/detail/bowyer_watson.hpp"
+#include "exidel/delaunay/detail/divide_and_conquer.hpp"
 #include "exidel/delaunay/detail/external_incremental.hpp"
+#include "exidel/delaunay/detail/lawson.hpp"
 #include "exidel/delaunay/detail/mesh.hpp"
 #include "exidel/delaunay/detail/randomized.hpp"
+#include "exidel/delaunay/detail/sweep_hull.hpp"
 #include "exidel/delaunay/external.hpp"
 #include "exidel/delaunay/result.hpp"
 #include "exidel/predicates/kernel.hpp"

@@ -30,6 +30,15 @@
 //                  prefix lexicographically, which keeps the order external (they are the
 //                  nearest points) and lets the seed fan them in order along their line.
 //
+// Step 3 is one of three Repair modes, so that the same sweep serves three algorithms:
+//   erode     the paper's erosion (the external algorithm);
+//   legalize  no erosion: p is fanned to the whole visible chain, then the fan's outer
+//             edges are legalized by Lawson flips (flips.hpp), as Sinclair's sweep-hull
+//             and delaunator do;
+//   none      no erosion and no flips: the fan of the visible chain only, which in
+//             lexicographic order is the sorted fan that the `lawson` algorithm starts
+//             from (a valid triangulation, not Delaunay).
+//
 // The in-circle test of step 3 is decided in exactly one place: Builder::in_circle.
 // Every walk is bounded; an answer of an inexact kernel that contradicts the geometry
 // stops the run with a Failure naming the step.
@@ -45,6 +54,7 @@
 #include <vector>
 
 #include "exidel/delaunay/detail/counting.hpp"
+#include "exidel/delaunay/detail/flips.hpp"
 #include "exidel/delaunay/detail/hull_start.hpp"
 #include "exidel/delaunay/detail/mesh.hpp"
 #include "exidel/delaunay/detail/radial.hpp"
@@ -53,7 +63,11 @@
 
 namespace exidel::delaunay::detail {
 
-template <PredicateKernel K, Instrumentation I, InCirclePolicy P, class Starts>
+/// How the sweep restores the Delaunay property after fanning a point (see above).
+enum class Repair : std::uint8_t { erode, legalize, none };
+
+template <PredicateKernel K, Instrumentation I, InCirclePolicy P, class Starts,
+          Repair R = Repair::erode>
 class Builder : Counting<I> {
 public:
     /// `points` in an external order (see above); `input_of` maps a position to the input
@@ -232,7 +246,7 @@ private:
                                     " is not the border edge it was pushed as");
                 }
                 const std::uint32_t c = tris[ep];
-                if (in_circle(pts_[x], pts_[top.end], pts_[c], p)) {
+                if (R == Repair::erode && in_circle(pts_[x], pts_[top.end], pts_[c], p)) {
                     stack_.pop_back();
                     stack_.push_back({half[en], top.end});  // c -> end
                     stack_.push_back({half[ep], c});        // x -> c, processed first
@@ -251,6 +265,7 @@ private:
             x = top.end;
         }
 
+        flip_stack_.clear();
         // Connect: border edge a -> b gets triangle (b, a, p). Its half-edge b->a faces
         // the triangle behind; with nothing behind, b->a is a hull edge outside the
         // visible chain (the eroded triangle had two hull edges) and keeps being one.
@@ -260,6 +275,7 @@ private:
             const auto t = static_cast<std::int32_t>(new_triangle(b, a, i));
             const std::int32_t behind = border_behind_[j];
             link(3 * t, behind);
+            if constexpr (R == Repair::legalize) flip_stack_.push_back(3 * t);
             if (behind < 0) hull_edge[b] = 3 * t;
             if (prev_t < 0) {
                 half[3 * static_cast<std::size_t>(t) + 1] = -1;
@@ -271,6 +287,16 @@ private:
         }
         half[3 * static_cast<std::size_t>(prev_t) + 2] = -1;
         hull_edge[i] = 3 * prev_t + 2;  // p -> upper
+        if constexpr (R == Repair::legalize) {
+            // The new triangles' edges opposite p (half-edge 0 of each, b -> a) are the
+            // ones the fan may have made illegal. Each flip gives p one more neighbour
+            // among the earlier points, so more than i flips means the kernel contradicted
+            // itself.
+            if (!legalize<P>(k_, pts_, *m_, static_cast<Counting<I>&>(*this), flip_stack_, i)) {
+                return fail(FailureKind::flips_exceeded, i,
+                            "more flips than the point can have neighbours");
+            }
+        }
         starts_.inserted(*m_, i, lower, upper);
         set_next(lower, i);
         set_next(i, upper);
@@ -287,6 +313,7 @@ private:
     std::vector<Pending> stack_;       // reused by every insertion: no allocation
     std::vector<std::uint32_t> border_vertex_;
     std::vector<std::int32_t> border_behind_;
+    std::vector<std::int32_t> flip_stack_;  // Repair::legalize
     std::uint32_t last_ = 0;
 };
 
@@ -300,7 +327,7 @@ struct RadialIds {
 /// empty): about their radial centre, exact distance order, the collinear prefix sorted
 /// back into position order. `input_of` maps positions to input indices. Counters are
 /// added to `counters`.
-template <PredicateKernel K, Instrumentation I, InCirclePolicy P>
+template <PredicateKernel K, Instrumentation I, InCirclePolicy P, Repair R = Repair::erode>
 std::optional<Failure> build_radial(const K& kernel, std::span<const Point2> points,
                                     std::span<const std::uint32_t> input_of, RadialIds& ids,
                                     Mesh& mesh, Counters& counters) {
@@ -313,10 +340,25 @@ std::optional<Failure> build_radial(const K& kernel, std::span<const Point2> poi
         local[j] = points[ids.order[j]];
         ids.input_of[j] = input_of[ids.order[j]];
     }
-    Builder<K, I, P, RadialHullHash> builder(kernel, local, ids.input_of, RadialHullHash(centre));
+    Builder<K, I, P, RadialHullHash, R> builder(kernel, local, ids.input_of,
+                                                RadialHullHash(centre));
     auto failure = builder.run(mesh);
     counters += builder.counters();
     return failure;
+}
+
+/// One radial run over the whole sorted input, written as an algorithm's output: the mesh
+/// over radial positions, their input indices, and the id of sorted position 0.
+template <PredicateKernel K, Instrumentation I, InCirclePolicy P, Repair R = Repair::erode>
+void build_radial_output(const K& kernel, const SortedInput& in, MeshOutput& out,
+                         Result& result) {
+    RadialIds ids;
+    result.failure = build_radial<K, I, P, R>(kernel, in.points, in.input_of, ids, out.mesh,
+                                              result.counters);
+    for (std::size_t j = 0; j < ids.order.size(); ++j) {
+        if (ids.order[j] == 0) out.first = static_cast<std::uint32_t>(j);
+    }
+    out.input_of = std::move(ids.input_of);
 }
 
 }  // namespace exidel::delaunay::detail

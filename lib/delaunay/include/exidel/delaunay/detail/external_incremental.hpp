@@ -44,13 +44,7 @@ struct ExternalIncremental {
         Mesh& mesh = out.mesh;
         auto radial = [&](Strategy reported) {
             result.strategy = reported;
-            RadialIds ids;
-            result.failure = build_radial<K, I, P>(kernel, in.points, in.input_of, ids, mesh,
-                                                   result.counters);
-            for (std::size_t j = 0; j < n; ++j) {
-                if (ids.order[j] == 0) out.first = static_cast<std::uint32_t>(j);
-            }
-            out.input_of = std::move(ids.input_of);
+            build_radial_output<K, I, P>(kernel, in, out, result);
         };
         if (n < 3) {
             mesh.collinear = true;

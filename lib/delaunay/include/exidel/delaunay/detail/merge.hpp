@@ -4,6 +4,13 @@
 // Mesh. Guibas and Stolfi (1985), "Primitives for the manipulation of general
 // subdivisions and the computation of Voronoi diagrams", Section 8.
 //
+// The zipper asks only orientation and in-circle questions, which a rotation of the plane
+// does not change, so the pieces may as well be separated in a rotated frame: the
+// divide and conquer's horizontal cuts (divide_and_conquer.hpp) separate them by (y, -x),
+// the lexicographic order after turning the plane clockwise by 90 degrees. The walks
+// start from the extreme points in that order, l0 the largest of L and r0 the smallest
+// of R, which the caller names; by default the last point of L and the first of R.
+//
 //   1. the lower common tangent l0 -> r0: every point on or to its left. Of points on
 //      the tangent line, the two innermost (l0 nearest R, r0 nearest L) are taken, so
 //      collinear points keep their edges along the line;
@@ -62,10 +69,15 @@ public:
            std::vector<std::uint8_t>& gone)
         : k_(kernel), pts_(points), m_(mesh), gone_(gone) {}
 
-    /// Merges R into L (L.end == R.first). On failure the two pieces are meaningless.
-    std::optional<Failure> merge(Piece& L, Piece& R) {
+    /// Merges R into L (L.end == R.first). `l0` and `r0`: L's largest and R's smallest
+    /// point in the order that separates them (above). On failure the two pieces are
+    /// meaningless.
+    std::optional<Failure> merge(Piece& L, Piece& R) { return merge(L, R, L.end - 1, R.first); }
+    std::optional<Failure> merge(Piece& L, Piece& R, std::uint32_t l0, std::uint32_t r0) {
         L_ = &L;
         R_ = &R;
+        start_l_ = l0;
+        start_r_ = r0;
         steps_.clear();
         deleted_.clear();
         // A guard against an inexact kernel sending the walks round in circles, not a
@@ -191,7 +203,7 @@ private:
         // 1. Lower common tangent, from the two extreme points (hull vertices of their
         // sides): move l clockwise and r counter-clockwise along the lower hulls while
         // the neighbour is strictly below the line, then inwards along the line.
-        std::uint32_t l = L_->end - 1, r = R_->first;
+        std::uint32_t l = start_l_, r = start_r_;
         auto hull_ok = [&](std::uint32_t v) {
             return vertex_ok(v) && vertex_ok(next[v]) && vertex_ok(prev[v]);
         };
@@ -355,6 +367,7 @@ private:
     std::vector<Chain> chains_;
     std::vector<std::uint32_t> deleted_;  // half-edges of deleted edges
     std::size_t budget_ = 0;
+    std::uint32_t start_l_ = 0, start_r_ = 0;
     std::uint32_t lower_l_ = 0, lower_r_ = 0, upper_l_ = 0, upper_r_ = 0;
     std::int32_t first_base_ = -1;
 };

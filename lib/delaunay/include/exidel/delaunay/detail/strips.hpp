@@ -61,6 +61,67 @@ std::vector<std::uint32_t> strip_cuts(std::span<const Point2> pts, std::size_t t
     return cuts;
 }
 
+/// Triangulates positions [a, b) of `pts` (sorted lexicographically, at least three, not
+/// all collinear) into the shared arrays: vertex ids are positions, triangle slots
+/// [2a, 2b) (a triangulation of b - a points has at most 2 (b - a) - 5 triangles). Three points are one triangle,
+/// written directly; more are triangulated in their own radial order (build_radial) and
+/// copied in. `piece` receives the range and its unused slots; counters go to `into`.
+template <PredicateKernel K, Instrumentation I, InCirclePolicy P>
+std::optional<Failure> build_piece(const K& kernel, std::span<const Point2> pts,
+                                   std::span<const std::uint32_t> input_of, std::uint32_t a,
+                                   std::uint32_t b, Mesh& mesh, Piece& piece, Counters& into) {
+    piece.first = a;
+    piece.end = b;
+    if (b - a == 3) {
+        const bool ccw = kernel.orient2d(pts[a], pts[a + 1], pts[a + 2]) == Sign::positive;
+        const std::uint32_t v[3] = {a, ccw ? a + 1 : a + 2, ccw ? a + 2 : a + 1};
+        const std::size_t base = 6 * static_cast<std::size_t>(a);
+        for (std::size_t j = 0; j < 3; ++j) {
+            mesh.triangles[base + j] = v[j];
+            mesh.halfedges[base + j] = -1;
+            mesh.hull_next[v[j]] = v[(j + 1) % 3];
+            mesh.hull_prev[v[(j + 1) % 3]] = v[j];
+            mesh.hull_edge[v[j]] = static_cast<std::int32_t>(base + j);
+        }
+        if constexpr (I != Instrumentation::off) ++into.triangles_created;
+        piece.free = {2 * a + 1, 2 * a + 2, 2 * a + 3, 2 * a + 4, 2 * a + 5};
+        return std::nullopt;
+    }
+    const auto part_points = pts.subspan(a, b - a);
+    RadialIds ids;
+    Mesh part;
+    auto failure =
+        build_radial<K, I, P>(kernel, part_points, input_of.subspan(a, b - a), ids, part, into);
+    if (failure) return failure;
+    const std::vector<std::uint32_t>& order = ids.order;
+    if (part.collinear) {
+        return Failure{FailureKind::merge_inconsistent, input_of[a], a,
+                       "piece [" + std::to_string(a) + ", " + std::to_string(b) +
+                           ") came out collinear although a point off its line was found"};
+    }
+    // Local vertex j is position a + order[j], local triangle t is slot 2a + t.
+    const std::size_t base = 6 * static_cast<std::size_t>(a);
+    for (std::size_t e = 0; e < part.triangles.size(); ++e) {
+        mesh.triangles[base + e] = a + order[part.triangles[e]];
+        mesh.halfedges[base + e] =
+            part.halfedges[e] < 0 ? -1 : part.halfedges[e] + static_cast<std::int32_t>(base);
+    }
+    for (std::size_t j = 0; j < order.size(); ++j) {
+        const std::uint32_t g = a + order[j];
+        if (part.hull_next[j] != dead) {
+            mesh.hull_next[g] = a + order[part.hull_next[j]];
+            mesh.hull_prev[g] = a + order[part.hull_prev[j]];
+            mesh.hull_edge[g] =
+                part.hull_edge[j] < 0 ? -1 : part.hull_edge[j] + static_cast<std::int32_t>(base);
+        }
+    }
+    piece.free.clear();
+    for (std::size_t t = 2 * a + part.triangles.size() / 3; t < 2 * std::size_t{b}; ++t) {
+        piece.free.push_back(static_cast<std::uint32_t>(t));
+    }
+    return std::nullopt;
+}
+
 /// Triangulates the sorted points by strips into `mesh` (over sorted positions). With a
 /// single strip, returns std::nullopt with mesh.collinear possibly set, as Builder does.
 template <PredicateKernel K, Instrumentation I, InCirclePolicy P>
@@ -78,47 +139,9 @@ std::optional<Failure> build_strips(const K& kernel, std::span<const Point2> pts
     mesh.hull_edge.assign(n, -1);
     std::vector<Piece> pieces(strips);
 
-    // Strip s, triangulated in its own radial order and copied into the shared arrays.
-    auto build_strip = [&](std::size_t s, Counters& into) -> std::optional<Failure> {
-        const std::uint32_t a = cuts[s], b = cuts[s + 1];
-        const auto strip = pts.subspan(a, b - a);
-        RadialIds ids;
-        Mesh part;
-        auto failure = build_radial<K, I, P>(kernel, strip, input_of.subspan(a, b - a), ids, part,
-                                             into);
-        if (failure) return failure;
-        const std::vector<std::uint32_t>& order = ids.order;
-        if (part.collinear) {
-            return Failure{FailureKind::merge_inconsistent, input_of[a], a,
-                           "strip [" + std::to_string(a) + ", " + std::to_string(b) +
-                               ") came out collinear although the cut found a "
-                               "point off its line"};
-        }
-        // Copy into the shared arrays: local vertex j is sorted position a + order[j],
-        // local triangle t is slot 2a + t.
-        const std::size_t base = 6 * static_cast<std::size_t>(a);
-        for (std::size_t e = 0; e < part.triangles.size(); ++e) {
-            mesh.triangles[base + e] = a + order[part.triangles[e]];
-            mesh.halfedges[base + e] =
-                part.halfedges[e] < 0 ? -1 : part.halfedges[e] + static_cast<std::int32_t>(base);
-        }
-        for (std::size_t j = 0; j < order.size(); ++j) {
-            const std::uint32_t g = a + order[j];
-            if (part.hull_next[j] != dead) {
-                mesh.hull_next[g] = a + order[part.hull_next[j]];
-                mesh.hull_prev[g] = a + order[part.hull_prev[j]];
-                mesh.hull_edge[g] = part.hull_edge[j] < 0
-                                        ? -1
-                                        : part.hull_edge[j] + static_cast<std::int32_t>(base);
-            }
-        }
-        Piece& piece = pieces[s];
-        piece.first = a;
-        piece.end = b;
-        for (std::size_t t = 2 * a + part.triangles.size() / 3; t < 2 * std::size_t{b}; ++t) {
-            piece.free.push_back(static_cast<std::uint32_t>(t));
-        }
-        return std::nullopt;
+    auto build_strip = [&](std::size_t s, Counters& into) {
+        return build_piece<K, I, P>(kernel, pts, input_of, cuts[s], cuts[s + 1], mesh, pieces[s],
+                                    into);
     };
 
     std::vector<std::uint8_t> gone(6 * n, 0);
