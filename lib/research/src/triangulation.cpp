@@ -17,6 +17,7 @@
 #include "exidel/delaunay/certify.hpp"
 #include "exidel/delaunay/triangulate.hpp"
 #include "exidel/io/points.hpp"
+#include "exidel/research/graphics.hpp"
 #include "exidel/research/studies.hpp"
 
 namespace exidel::research {
@@ -342,6 +343,11 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
         if (n < 1 || n > 100000) throw std::invalid_argument("triangulation sizes must be in [1, 100000]");
     }
     const std::size_t per_method = kernels.size() * std::size(both_policies);
+    const std::vector<unsigned> bits = options.precision_bits.empty()
+                                           ? std::vector<unsigned>{12, 16, 20, 24, 32, 40, 48, 53, 64, 80, 106}
+                                           : options.precision_bits;
+    std::vector<Kernel> mpfr_kernels;
+    for (unsigned b : bits) mpfr_kernels.push_back(parse_kernel("mpfr:" + std::to_string(b)));
 
     // One chunk per (family, seed): one point set, every method, kernel and policy on it
     // (runs in that nesting), and the work of every work method with the adaptive kernel.
@@ -351,10 +357,11 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
         std::vector<Point2> points;
         std::vector<TriangulationRun> runs;
         std::vector<WorkSample> work;
+        std::vector<std::uint8_t> wrong_at;  // per method, then precision: 1 if not Delaunay
     };
     std::vector<Chunk> chunks;
     for (testing::Family f : families) {
-        for (std::size_t s = 0; s < seeds; ++s) chunks.push_back({f, s, {}, {}, {}});
+        for (std::size_t s = 0; s < seeds; ++s) chunks.push_back({f, s, {}, {}, {}, {}});
     }
     Progress progress("triangulation", chunks.size(), run.progress);
     for_each_chunk(chunks.size(), run.jobs, &progress, [&](std::size_t i) {
@@ -375,6 +382,13 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
             }
         }
         for (const Method& m : work_methods) c.work.push_back(measure_work(c.points, m));
+        for (const Method& m : methods) {
+            for (const Kernel& k : mpfr_kernels) {
+                const Classification r =
+                    classify_triangulation(c.points, k, delaunay::InCirclePolicy::determinant, m);
+                c.wrong_at.push_back(is_wrong(r.outcome) ? 1 : 0);
+            }
+        }
     });
 
     TriangulationStudy study;
@@ -414,6 +428,17 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
                 }
             }
             study.runs.push_back(tr);
+        }
+    }
+
+    for (std::size_t op = 0; op < methods.size(); ++op) {
+        for (std::size_t b = 0; b < bits.size(); ++b) {
+            PrecisionRate rate{methods[op], bits[b], 0, 0};
+            for (const Chunk& c : chunks) {
+                rate.wrong += c.wrong_at[op * bits.size() + b];
+                ++rate.runs;
+            }
+            study.precision.push_back(rate);
         }
     }
 
@@ -629,11 +654,47 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
         "would have removed); for randomized, Lawson's flips. "
         "merges: strips merged over all sets; certified: results the exact certifier accepted.");
     study.report.table(work_table);
+    // Failure rate against MPFR precision: one line per method.
+    Table precision_table;
+    precision_table.header = method_header({}, {});
+    for (unsigned b : bits) precision_table.header.push_back("p = " + std::to_string(b));
+    LinePlot plot;
+    plot.title = "Triangulations not certified Delaunay, MPFR kernel at p bits (determinant policy)";
+    plot.x_label = "significand bits p";
+    plot.y_label = "share of point sets with a wrong outcome";
+    for (std::size_t op = 0; op < methods.size(); ++op) {
+        std::vector<std::string> row = method_cells(methods[op]);
+        Series series;
+        series.name = algorithm_column ? std::string(delaunay::to_string(methods[op].algorithm)) : "";
+        if (is_external(methods[op])) {
+            series.name += (series.name.empty() ? "" : " ") + std::string("(") + order_name(methods[op]) + ")";
+        }
+        for (std::size_t b = 0; b < bits.size(); ++b) {
+            const PrecisionRate& r = study.precision[op * bits.size() + b];
+            row.push_back(std::to_string(r.wrong) + "/" + std::to_string(r.runs));
+            series.x.push_back(double(r.bits));
+            series.y.push_back(r.runs ? double(r.wrong) / double(r.runs) : 0.0);
+        }
+        precision_table.rows.push_back(std::move(row));
+        plot.series.push_back(std::move(series));
+    }
+    write_text_file(run.out / "triangulation_precision.csv", precision_table.csv());
+    write_text_file(run.out / "precision.svg", render_svg(plot));
+    study.report.heading("Failure rate against precision");
+    study.report.paragraph(
+        "The same point sets triangulated by each method with the MPFR kernel at p significand bits "
+        "(the input coordinates rounded to p bits as the kernel reads them, every operation rounded "
+        "to p bits) and the determinant policy; a run counts as wrong when its outcome is anything "
+        "but certified Delaunay (not Delaunay, invalid, failure detected). Cells: wrong runs / point "
+        "sets.");
+    study.report.image("failure rate vs precision", "precision.svg");
+    study.report.table(precision_table);
     study.report.heading("Per family");
     study.report.table(study.table);
     study.report.link("triangulation.csv", "triangulation.csv");
     study.report.link("triangulation_summary.csv", "triangulation_summary.csv");
     study.report.link("triangulation_work.csv", "triangulation_work.csv");
+    study.report.link("triangulation_precision.csv", "triangulation_precision.csv");
     return study;
 }
 

@@ -227,6 +227,10 @@ struct TriangulationOptions {
     /// above if it takes an order (methods_of), and in the work table. With more than one,
     /// every table gets an "algorithm" column.
     std::vector<delaunay::Algorithm> algorithms;
+    /// Precisions (significand bits) of the MPFR kernel for the failure-rate plot, each
+    /// method with the determinant policy on every point set; empty: 12, 16, 20, 24, 32,
+    /// 40, 48, 53, 64, 80, 106.
+    std::vector<unsigned> precision_bits;
 };
 
 struct TriangulationRun {
@@ -263,8 +267,17 @@ struct OrderWork {
     std::size_t certified = 0;               ///< sets whose result is certified Delaunay
 };
 
+/// One method at one MPFR precision: point sets whose triangulation came out wrong (any
+/// outcome but certified Delaunay), out of `runs`.
+struct PrecisionRate {
+    Method method;
+    unsigned bits = 0;
+    std::uint64_t wrong = 0, runs = 0;
+};
+
 struct TriangulationStudy : StudyResult {
     std::vector<TriangulationRun> runs;
+    std::vector<PrecisionRate> precision;  ///< per method (outcome-table order), then bits
     std::vector<Fixture> fixtures;
     std::vector<OrderWork> work;  ///< per family (study order), then per work method (all_orders
                                   ///< for the external algorithm)
