@@ -29,8 +29,9 @@ report.md starts with the command that writes the same files again):
   precision      wrong-sign rate of MPFR at p bits vs the exact kernel, per
                  formulation and near-degenerate family; plot + threshold table
   triangulation  every kernel x in-circle policy x family: certified Delaunay, valid
-                 but not Delaunay, invalid, or failure; minimal failing fixtures; and
-                 the work (flips, predicate calls) of each insertion order
+                 but not Delaunay, invalid, or failure; minimal failing fixtures; the
+                 work (flips, predicate calls) of each algorithm and insertion order;
+                 the failure rate against MPFR precision, one line per algorithm
   stages         which stage of the adaptive kernel decides, on query streams and
                  inside triangulations
   all            the four above into DIR/<study>/ and DIR/report.md, each with its
@@ -81,6 +82,8 @@ triangulation:
   --algorithm LIST  algorithms (listed at the end), comma-separated, or 'all'
                   (default all). Each runs in the orders above if it takes an
                   order; with several, every table gets an "algorithm" column
+  --bits LIST     MPFR precisions of the failure rate against precision (one line per
+                  algorithm in precision.svg; default 12,16,20,24,32,40,48,53,64,80,106)
 
 stages:
   --families LIST (default all)  --samples N queries per family and predicate
@@ -336,6 +339,12 @@ int study_command(std::span<const std::string_view> args) {
             if (p.shrink) o.shrink_per_class = *p.shrink;
             if (p.order) o.orders = parse_orders(*p.order);
             if (p.algorithms) o.algorithms = parse_algorithms(*p.algorithms);
+            if (p.bits) {
+                for (std::size_t b : parse_list(*p.bits, "--bits", MpfrKernel::max_bits)) {
+                    o.precision_bits.push_back(unsigned(b));
+                    (void)research::parse_kernel("mpfr:" + std::to_string(b));  // in range?
+                }
+            }
             run_and_report(p, o, run_triangulation_study, seconds);
         } else if (p.study == "stages") {
             StagesOptions o;

@@ -469,6 +469,38 @@ TEST(Triangulation, AlgorithmsComeFromTheRegistry) {
 #endif
 }
 
+// The failure rate against precision: one rate per algorithm and precision, over every
+// point set; at 1024 bits the MPFR kernel's determinant is exact on these inputs
+// (proofs/bitcounts.md: 4b + 8 bits, b = 53 + the exponent spread), so nothing is wrong.
+TEST(Triangulation, FailureRateAgainstPrecisionHasOneLinePerAlgorithm) {
+    TriangulationOptions tr;
+    tr.kernels = {"adaptive"};
+    tr.families = {testing::Family::uniform};
+    tr.seeds = 2;
+    tr.sizes = {30};
+    tr.precision_bits = {24, 1024};
+    const fs::path out = work_dir("triangulation_precision");
+    const TriangulationStudy s = run_triangulation_study(tr, quiet_run(out));
+    ASSERT_EQ(s.precision.size(), delaunay::algorithms().size() * 2);
+    for (std::size_t i = 0; i < s.precision.size(); ++i) {
+        const PrecisionRate& r = s.precision[i];
+        EXPECT_EQ(r.method.algorithm, delaunay::algorithms()[i / 2].id);
+        EXPECT_EQ(r.bits, i % 2 == 0 ? 24u : 1024u);
+        EXPECT_EQ(r.runs, 2u);
+        EXPECT_LE(r.wrong, r.runs);
+        if (r.bits == 1024) {
+            EXPECT_EQ(r.wrong, 0u) << delaunay::to_string(r.method.algorithm);
+        }
+    }
+    EXPECT_TRUE(fs::exists(out / "precision.svg"));
+    EXPECT_TRUE(fs::exists(out / "triangulation_precision.csv"));
+#ifdef EXIDEL_CLI_PATH
+    EXPECT_EQ(run_cli("study triangulation --bits 1 --out " +
+                      work_dir("triangulation_bad_bits").string()),
+              2);
+#endif
+}
+
 TEST(Triangulation, ShrinkingKeepsTheOutcomeAndRemovesEveryRemovablePoint) {
     const fs::path file = fs::path(EXIDEL_RESEARCH_FIXTURES) / "double_overflow_no_visible_edge.xy";
     const Kernel dbl = DoubleKernel{};
