@@ -1,0 +1,72 @@
+// exidel: constructions. A predicate returns a sign; a construction returns a point, and
+// the only honest promise for a point of doubles is "the nearest doubles to the exact
+// value". circumcenter() keeps that promise whatever the input and whatever flags the
+// caller's own code is compiled with: equal exact circumcentres (the Delaunay triangles
+// of one circle) give bit-identical doubles, so nothing downstream needs a tolerance.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+#include "exidel/predicates/types.hpp"
+
+namespace exidel {
+
+/// What circumcenter() found.
+enum class CircumcenterStatus : std::uint8_t {
+    ok,         ///< both coordinates are the nearest doubles to the exact circumcentre
+    collinear,  ///< a, b, c are collinear (or two coincide): no circle; point is NaN, NaN
+    overflow,   ///< a coordinate's exact value rounds beyond the largest double: that
+                ///< coordinate is +-infinity (round to nearest's answer), the other is
+                ///< still correctly rounded
+    non_finite_input,  ///< a NaN or infinite coordinate; point is NaN, NaN
+};
+
+std::string_view to_string(CircumcenterStatus status) noexcept;
+
+/// Which stage decided a circumcentre (for measurements: the value never depends on it).
+enum class CircumcenterStage : std::uint8_t {
+    floating,     ///< plain doubles with a proven error bound
+    double_word,  ///< double-word (about 106-bit) evaluation, verified
+    exact,        ///< exact integers (GMP), rounded once
+};
+
+std::string_view to_string(CircumcenterStage stage) noexcept;
+
+struct Circumcenter {
+    /// Each coordinate is the exact circumcentre's coordinate rounded to nearest, ties to
+    /// even, with gradual underflow (a value below the smallest subnormal's half rounds to
+    /// a signed zero: +0 or -0 by the exact value's sign).
+    Point2 point;
+    CircumcenterStatus status;
+    CircumcenterStage stage = CircumcenterStage::exact;
+
+    bool ok() const noexcept { return status == CircumcenterStatus::ok; }
+};
+
+/// The circumcentre of triangle abc (either orientation), correctly rounded.
+///
+/// Each stage accepts a coordinate s only when it has proven that the exact value lies
+/// strictly within half the gap between s and its nearer neighbour double: then no other
+/// double can be nearest (proofs/bounds.md#circumcenter). Stage 1 evaluates the centre's
+/// offset from a in doubles with an error bound: enough whenever the triangle is small
+/// next to its coordinates, as Delaunay triangles of many points are. Stage 2 proposes s
+/// from a double-word evaluation and verifies it with another. Stage 3 evaluates the
+/// exact rational value with integers (GMP) and rounds it once: exact ties between two
+/// doubles, nearly flat triangles, and coordinates beyond 2^+-150 or subnormal go there.
+Circumcenter circumcenter(Point2 a, Point2 b, Point2 c) noexcept;
+
+/// The circumcentres of many triangles: out[t] = circumcenter(points[triangles[3t]],
+/// points[triangles[3t + 1]], points[triangles[3t + 2]]) for every t (indices must be
+/// valid; out.size() == triangles.size() / 3). One call, so the stages inline into one
+/// loop; stage_counts, when given, receives how many triangles each stage decided
+/// (indexed by CircumcenterStage).
+void circumcenters(std::span<const Point2> points, std::span<const std::uint32_t> triangles,
+                   std::span<Circumcenter> out, std::uint64_t* stage_counts = nullptr) noexcept;
+
+/// Stage 3 alone: the exact rational circumcentre rounded once (the reference the fast
+/// path is tested against; always correct, much slower).
+Circumcenter circumcenter_exact(Point2 a, Point2 b, Point2 c) noexcept;
+
+}  // namespace exidel

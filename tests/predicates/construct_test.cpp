@@ -1,0 +1,175 @@
+// exidel::circumcenter is correctly rounded: both coordinates equal CGAL's exact rational
+// circumcentre rounded to nearest by MPFR (circumcenter_oracle.hpp), on every point family,
+// at every scale from subnormal to huge; collinear input is reported, never divided by.
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <rapidcheck.h>
+
+#include "circumcenter_oracle.hpp"
+#include "exidel/predicates/construct.hpp"
+#include "exidel/testing/all.hpp"
+
+namespace exidel::test {
+namespace {
+
+// Bit equality: +0 and -0 differ, NaN equals NaN.
+bool same_bits(double a, double b) {
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+
+// The result of `construct` against the oracle for one triangle (RapidCheck assertions).
+template <class Construct>
+void check_against_oracle(Construct construct, Point2 a, Point2 b, Point2 c) {
+    const Circumcenter got = construct(a, b, c);
+    const std::optional<Point2> want = oracle_circumcenter(a, b, c);
+    if (!want) {
+        RC_ASSERT(got.status == CircumcenterStatus::collinear);
+        RC_ASSERT(std::isnan(got.point.x) && std::isnan(got.point.y));
+        return;
+    }
+    const bool overflow = std::isinf(want->x) || std::isinf(want->y);
+    RC_ASSERT(got.status == (overflow ? CircumcenterStatus::overflow : CircumcenterStatus::ok));
+    RC_ASSERT(same_bits(got.point.x, want->x));
+    RC_ASSERT(same_bits(got.point.y, want->y));
+}
+
+template <class Construct>
+void check_every_family(const std::string& what, Construct construct) {
+    for (const testing::FamilyInfo& f : testing::all_families()) {
+        const bool ok = rc::check(what + " on " + std::string(f.name), [&] {
+            const auto [a, b, c] = *testing::gen_query3(f.family);
+            check_against_oracle(construct, a, b, c);
+        });
+        EXPECT_TRUE(ok) << what << " failed on family " << f.name;
+    }
+}
+
+TEST(Circumcenter, IsCorrectlyRoundedOnEveryFamily) {
+    check_every_family("circumcenter", circumcenter);
+}
+
+TEST(Circumcenter, ExactStageIsCorrectlyRoundedOnEveryFamily) {
+    check_every_family("circumcenter_exact", circumcenter_exact);
+}
+
+// The same queries scaled by 2^k for k from -1100 to 1000 and translated: subnormal
+// centres, centres that underflow to zero or overflow to infinity, tiny triangles far
+// from the origin.
+TEST(Circumcenter, IsCorrectlyRoundedAtEveryScale) {
+    for (const testing::FamilyInfo& f : testing::all_families()) {
+        const bool ok = rc::check("circumcenter scaled, " + std::string(f.name), [&] {
+            const auto [a, b, c] = *testing::gen_query3(f.family);
+            const int k = *rc::gen::inRange(-1100, 1001);
+            const double shift = *rc::gen::element(0.0, 1.0, -3.0e5, 0x1p-1060);
+            const auto move = [&](Point2 p) {
+                return Point2{std::ldexp(p.x, k) + shift, std::ldexp(p.y, k) - shift};
+            };
+            const Point2 sa = move(a), sb = move(b), sc = move(c);
+            RC_PRE(std::isfinite(sa.x) && std::isfinite(sa.y) && std::isfinite(sb.x) &&
+                   std::isfinite(sb.y) && std::isfinite(sc.x) && std::isfinite(sc.y));
+            check_against_oracle(circumcenter, sa, sb, sc);
+        });
+        EXPECT_TRUE(ok) << f.name;
+    }
+}
+
+TEST(Circumcenter, FastStageDecidesRandomTriangles) {
+    // Uniform random triangles in the unit square are far from every tie and every range
+    // limit: stage 1 must decide nearly all of them (a filter that never fires would still
+    // be correct, and this test is what catches it).
+    std::uint64_t state = 12345;
+    const auto next = [&] {
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        return static_cast<double>(state >> 11) * 0x1p-53;
+    };
+    int fast = 0;
+    const int n = 20000;
+    for (int i = 0; i < n; ++i) {
+        const Point2 a{next(), next()}, b{next(), next()}, c{next(), next()};
+        const Circumcenter got = circumcenter(a, b, c);
+        if (got.stage != CircumcenterStage::exact) ++fast;
+        const auto want = oracle_circumcenter(a, b, c);
+        ASSERT_TRUE(want);
+        ASSERT_TRUE(same_bits(got.point.x, want->x) && same_bits(got.point.y, want->y));
+    }
+    EXPECT_GT(fast, n * 99 / 100);
+}
+
+constexpr double tiny = std::numeric_limits<double>::denorm_min();
+constexpr double huge = std::numeric_limits<double>::max();
+
+TEST(Circumcenter, SubnormalCentreIsExact) {
+    const Circumcenter r = circumcenter({0, 0}, {2 * tiny, 0}, {0, 2 * tiny});
+    EXPECT_EQ(r.status, CircumcenterStatus::ok);
+    EXPECT_EQ(r.point.x, tiny);
+    EXPECT_EQ(r.point.y, tiny);
+}
+
+TEST(Circumcenter, HalfOfTheSmallestSubnormalRoundsToEvenZero) {
+    const Circumcenter r = circumcenter({0, 0}, {tiny, 0}, {0, tiny});
+    EXPECT_EQ(r.status, CircumcenterStatus::ok);
+    EXPECT_TRUE(same_bits(r.point.x, 0.0) && same_bits(r.point.y, 0.0));
+    // Three halves of it: ties to the even neighbour, 2 * tiny.
+    const Circumcenter s = circumcenter({0, 0}, {3 * tiny, 0}, {0, -3 * tiny});
+    EXPECT_EQ(s.point.x, 2 * tiny);
+    EXPECT_EQ(s.point.y, -2 * tiny);
+}
+
+TEST(Circumcenter, OverflowIsInfinityWithItsSign) {
+    // A nearly flat triangle of huge points: the centre is far beyond the largest double.
+    const Circumcenter r = circumcenter({-huge, 0}, {huge, 0}, {0, 1});
+    EXPECT_EQ(r.status, CircumcenterStatus::overflow);
+    EXPECT_EQ(r.point.x, 0.0);
+    EXPECT_EQ(r.point.y, -std::numeric_limits<double>::infinity());
+    // Differences that overflow but a representable centre.
+    const Circumcenter s = circumcenter({-huge, -huge}, {huge, -huge}, {-huge, huge});
+    EXPECT_EQ(s.status, CircumcenterStatus::ok);
+    EXPECT_EQ(s.point.x, 0.0);
+    EXPECT_EQ(s.point.y, 0.0);
+}
+
+TEST(Circumcenter, CollinearAndDuplicatePointsAreReported) {
+    for (const auto& [a, b, c] : {std::tuple{Point2{0, 0}, Point2{1, 1}, Point2{2, 2}},
+                                  std::tuple{Point2{0, 0}, Point2{0, 0}, Point2{1, 0}},
+                                  std::tuple{Point2{3, 3}, Point2{3, 3}, Point2{3, 3}},
+                                  std::tuple{Point2{0.1, 0.2}, Point2{0.3, 0.6}, Point2{0.5, 1.0}}}) {
+        const Circumcenter r = circumcenter(a, b, c);
+        const bool collinear = !oracle_circumcenter(a, b, c);
+        EXPECT_EQ(r.status == CircumcenterStatus::collinear, collinear);
+        if (collinear) {
+            EXPECT_TRUE(std::isnan(r.point.x) && std::isnan(r.point.y));
+        }
+    }
+}
+
+TEST(Circumcenter, NonFiniteInputIsReported) {
+    const double inf = std::numeric_limits<double>::infinity();
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_EQ(circumcenter({0, 0}, {inf, 0}, {0, 1}).status, CircumcenterStatus::non_finite_input);
+    EXPECT_EQ(circumcenter({0, nan}, {1, 0}, {0, 1}).status, CircumcenterStatus::non_finite_input);
+}
+
+TEST(Circumcenter, CocircularTrianglesShareTheirCentreBitForBit) {
+    // The 12 lattice points of x^2 + y^2 = 25 moved to (0.1, 0.3) (rounded): every
+    // triangle of them whose vertices are still exactly cocircular gives one double.
+    std::vector<Point2> pts;
+    for (int x = -5; x <= 5; ++x)
+        for (int y = -5; y <= 5; ++y)
+            if (x * x + y * y == 25) pts.push_back({x * 0x1p-3 + 1024, y * 0x1p-3 - 7});
+    const Circumcenter first = circumcenter(pts[0], pts[1], pts[2]);
+    ASSERT_TRUE(first.ok());
+    for (std::size_t i = 0; i + 2 < pts.size(); ++i) {
+        const Circumcenter r = circumcenter(pts[i], pts[i + 1], pts[i + 2]);
+        EXPECT_TRUE(same_bits(r.point.x, first.point.x) && same_bits(r.point.y, first.point.y));
+    }
+    EXPECT_EQ(first.point.x, 1024.0);
+    EXPECT_EQ(first.point.y, -7.0);
+}
+
+}  // namespace
+}  // namespace exidel::test
