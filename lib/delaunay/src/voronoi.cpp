@@ -1,0 +1,242 @@
+// exidel: the Voronoi diagram's kernel-independent work (voronoi.hpp).
+#include "exidel/delaunay/voronoi.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <numeric>
+#include <utility>
+
+namespace exidel::delaunay {
+namespace detail {
+
+namespace {
+
+bool same_bits(Point2 a, Point2 b) noexcept {
+    return std::bit_cast<std::uint64_t>(a.x) == std::bit_cast<std::uint64_t>(b.x) &&
+           std::bit_cast<std::uint64_t>(a.y) == std::bit_cast<std::uint64_t>(b.y);
+}
+
+/// b - a, rounded: each component has the exact difference's sign. A difference that
+/// overflows is taken of the halves instead (exact: such coordinates are huge).
+double difference(double b, double a) noexcept {
+    const double d = b - a;
+    return std::isfinite(d) ? d : b / 2 - a / 2;
+}
+
+/// The outward normal of hull edge p -> q (counter-clockwise hull: the inside is on the
+/// left), exact in sign.
+Point2 outward_normal(Point2 p, Point2 q) noexcept {
+    return {difference(q.y, p.y), -difference(q.x, p.x)};
+}
+
+/// For every first occurrence, its duplicates (input order), as offsets into one array.
+struct Duplicates {
+    std::vector<std::uint32_t> offsets, items;
+    Duplicates(const Triangulation& t, std::size_t n) : offsets(n + 1, 0) {
+        for (const std::uint32_t d : t.duplicates) ++offsets[t.vertex_of_input[d] + 1];
+        std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
+        items.resize(t.duplicates.size());
+        std::vector<std::uint32_t> fill(offsets.begin(), offsets.end() - 1);
+        for (const std::uint32_t d : t.duplicates) items[fill[t.vertex_of_input[d]]++] = d;
+    }
+    /// Appends site s and then its duplicates.
+    void append(std::uint32_t s, std::vector<std::uint32_t>& out) const {
+        out.push_back(s);
+        out.insert(out.end(), items.begin() + offsets[s], items.begin() + offsets[s + 1]);
+    }
+};
+
+}  // namespace
+
+VoronoiBuilder::VoronoiBuilder(std::span<const Point2> points, const Triangulation& t)
+    : points_(points), t_(t), centres_(t.triangle_count()), parent_(t.triangle_count()) {
+    circumcenters(points, t.triangles, centres_, stage_counts_);
+    for (std::size_t i = 0; i < centres_.size(); ++i) {
+        if (centres_[i].ok()) continue;
+        const std::uint32_t* v = &t.triangles[3 * i];
+        throw VoronoiError(
+            i, centres_[i].status,
+            "the Voronoi vertex of Delaunay triangle (" + std::to_string(v[0]) + ", " +
+                std::to_string(v[1]) + ", " + std::to_string(v[2]) + ") is not a finite point: " +
+                (centres_[i].status == CircumcenterStatus::overflow
+                     ? "its exact centre is beyond the largest double"
+                     : "the triangle is " + std::string(to_string(centres_[i].status))));
+    }
+    std::iota(parent_.begin(), parent_.end(), 0u);
+    for (std::size_t e = 0; e < t.halfedges.size(); ++e) {
+        const std::int32_t twin = t.halfedges[e];
+        if (twin <= static_cast<std::int32_t>(e)) continue;  // boundary, or seen from the twin
+        if (same_bits(centres_[e / 3].point, centres_[static_cast<std::size_t>(twin) / 3].point))
+            candidates_.push_back(static_cast<std::uint32_t>(e));
+    }
+}
+
+void VoronoiBuilder::incircle_query(std::uint32_t e, Point2 q[4]) const noexcept {
+    const std::size_t t = e / 3;
+    for (int k = 0; k < 3; ++k) q[k] = points_[t_.triangles[3 * t + k]];
+    const auto twin = static_cast<std::size_t>(t_.halfedges[e]);
+    q[3] = points_[t_.triangles[prev_halfedge(twin)]];
+}
+
+std::uint32_t VoronoiBuilder::find(std::uint32_t t) noexcept {
+    while (parent_[t] != t) {
+        parent_[t] = parent_[parent_[t]];
+        t = parent_[t];
+    }
+    return t;
+}
+
+void VoronoiBuilder::merge(std::uint32_t e) noexcept {
+    const std::uint32_t a = find(e / 3);
+    const std::uint32_t b = find(static_cast<std::uint32_t>(t_.halfedges[e]) / 3);
+    if (a == b) return;
+    parent_[std::max(a, b)] = std::min(a, b);  // the root is the group's first triangle
+    ++merges_;
+}
+
+VoronoiDiagram VoronoiBuilder::finish(std::uint64_t tests) && {
+    VoronoiDiagram d;
+    const std::vector<std::uint32_t>& tri = t_.triangles;
+    const std::vector<std::int32_t>& twin = t_.halfedges;
+    const std::size_t triangles = centres_.size(), n = points_.size();
+    std::copy(std::begin(stage_counts_), std::end(stage_counts_), d.stage_counts);
+    d.cocircular_tests = tests;
+    d.cocircular_merges = merges_;
+
+    // One vertex per group, numbered in the order of the groups' first triangles (a
+    // group's root is its smallest triangle, so it is numbered before its members).
+    d.vertex_of_triangle.resize(triangles);
+    std::vector<std::uint32_t> first_triangle, group_size;
+    for (std::uint32_t t = 0; t < triangles; ++t) {
+        const std::uint32_t root = find(t);
+        if (root == t) {
+            d.vertex_of_triangle[t] = static_cast<std::uint32_t>(d.vertices.size());
+            d.vertices.push_back(centres_[t].point);
+            first_triangle.push_back(t);
+            group_size.push_back(0);
+        } else {
+            d.vertex_of_triangle[t] = d.vertex_of_triangle[root];
+        }
+        ++group_size[d.vertex_of_triangle[t]];
+    }
+    const auto vertex_of_edge = [&](std::size_t e) { return d.vertex_of_triangle[e / 3]; };
+
+    // The sites of each vertex: a triangle's three corners, or the boundary of a group's
+    // union (a convex polygon inscribed in the circle), counter-clockwise, from the
+    // smallest index. Boundary half-edges of the merged groups, bucketed by vertex:
+    std::vector<std::uint32_t> boundary_offsets(d.vertices.size() + 1, 0), boundary;
+    const auto on_group_boundary = [&](std::size_t e) {
+        const std::uint32_t v = vertex_of_edge(e);
+        return group_size[v] > 1 && (twin[e] < 0 || vertex_of_edge(twin[e]) != v);
+    };
+    for (std::size_t e = 0; e < tri.size(); ++e)
+        if (on_group_boundary(e)) ++boundary_offsets[vertex_of_edge(e) + 1];
+    std::partial_sum(boundary_offsets.begin(), boundary_offsets.end(), boundary_offsets.begin());
+    boundary.resize(boundary_offsets.back());
+    {
+        std::vector<std::uint32_t> fill(boundary_offsets.begin(), boundary_offsets.end() - 1);
+        for (std::size_t e = 0; e < tri.size(); ++e)
+            if (on_group_boundary(e)) boundary[fill[vertex_of_edge(e)]++] = static_cast<std::uint32_t>(e);
+    }
+    const Duplicates dups(t_, n);
+    std::vector<std::uint32_t> ring;
+    d.sites.reserve(3 * d.vertices.size() + t_.duplicates.size());
+    d.site_offsets.reserve(d.vertices.size() + 1);
+    for (std::size_t v = 0; v < d.vertices.size(); ++v) {
+        ring.clear();
+        if (group_size[v] == 1) {
+            const std::uint32_t* c = &tri[3 * first_triangle[v]];
+            ring.assign(c, c + 3);
+        } else {
+            // Follow the boundary: the edge leaving a corner starts where the previous ended.
+            const auto begin = boundary.begin() + boundary_offsets[v];
+            const auto end = boundary.begin() + boundary_offsets[v + 1];
+            std::sort(begin, end, [&](std::uint32_t a, std::uint32_t b) { return tri[a] < tri[b]; });
+            std::uint32_t e = *begin;
+            for (std::ptrdiff_t k = 0; k < end - begin; ++k) {
+                ring.push_back(tri[e]);
+                const std::uint32_t to = tri[next_halfedge(e)];
+                if (to == ring.front()) break;
+                const auto it = std::lower_bound(begin, end, to, [&](std::uint32_t a, std::uint32_t value) {
+                    return tri[a] < value;
+                });
+                if (it == end || tri[*it] != to) break;  // not a disc: only an inexact kernel
+                e = *it;
+            }
+        }
+        std::rotate(ring.begin(), std::min_element(ring.begin(), ring.end()), ring.end());
+        for (const std::uint32_t s : ring) dups.append(s, d.sites);
+        d.site_offsets.push_back(static_cast<std::uint32_t>(d.sites.size()));
+    }
+
+    // The cells: walk counter-clockwise around every site from its hull edge (if it is on
+    // the hull) through the triangles' vertices, merging repeats of one vertex.
+    constexpr std::uint32_t none = 0xffffffffu;
+    std::vector<std::uint32_t> start(n, none);
+    for (std::size_t e = 0; e < tri.size(); ++e)
+        if (twin[e] < 0 || start[tri[e]] == none) start[tri[e]] = static_cast<std::uint32_t>(e);
+    for (std::size_t e = 0; e < tri.size(); ++e)
+        if (twin[e] < 0) start[tri[e]] = static_cast<std::uint32_t>(e);
+    d.unbounded.assign(n, 0);
+    d.entry_ray.assign(n, Point2{0, 0});
+    d.exit_ray.assign(n, Point2{0, 0});
+    d.cell_offsets.reserve(n + 1);
+    d.cell_vertices.reserve(3 * n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint32_t s = t_.vertex_of_input[i];
+        if (s != i) {  // a duplicate: its twin's cell, already built (s < i)
+            const auto c = d.cell(s);
+            d.cell_vertices.insert(d.cell_vertices.end(), c.begin(), c.end());
+            d.unbounded[i] = d.unbounded[s];
+            d.entry_ray[i] = d.entry_ray[s];
+            d.exit_ray[i] = d.exit_ray[s];
+            d.cell_offsets.push_back(static_cast<std::uint32_t>(d.cell_vertices.size()));
+            continue;
+        }
+        const std::size_t first = d.cell_vertices.size();
+        const std::uint32_t e0 = start[s];
+        if (e0 == none) {  // in no triangle: only possible for an inconsistent structure
+            d.unbounded[i] = 1;
+            d.cell_offsets.push_back(static_cast<std::uint32_t>(first));
+            continue;
+        }
+        std::uint32_t e = e0;
+        std::int32_t exit_edge = -1;
+        for (std::size_t step = 0; step < tri.size(); ++step) {
+            const std::uint32_t v = vertex_of_edge(e);
+            if (d.cell_vertices.size() == first || d.cell_vertices.back() != v)
+                d.cell_vertices.push_back(v);
+            const std::size_t incoming = prev_halfedge(e);  // (previous neighbour -> s)
+            if (twin[incoming] < 0) {
+                exit_edge = static_cast<std::int32_t>(incoming);
+                break;
+            }
+            e = static_cast<std::uint32_t>(twin[incoming]);
+            if (e == e0) break;
+        }
+        if (exit_edge >= 0) {
+            d.unbounded[i] = 1;
+            d.entry_ray[i] = outward_normal(points_[s], points_[tri[next_halfedge(e0)]]);
+            d.exit_ray[i] = outward_normal(points_[tri[static_cast<std::size_t>(exit_edge)]], points_[s]);
+        } else if (d.cell_vertices.size() - first > 1 && d.cell_vertices.back() == d.cell_vertices[first]) {
+            d.cell_vertices.pop_back();  // the walk closed on the vertex it started in
+        }
+        d.cell_offsets.push_back(static_cast<std::uint32_t>(d.cell_vertices.size()));
+    }
+    return d;
+}
+
+VoronoiDiagram collinear_voronoi(std::span<const Point2> points, const Triangulation& t) {
+    VoronoiDiagram d;
+    d.collinear = true;
+    d.chain = t.hull;
+    d.unbounded.assign(points.size(), 1);
+    d.entry_ray.assign(points.size(), Point2{0, 0});
+    d.exit_ray.assign(points.size(), Point2{0, 0});
+    d.cell_offsets.assign(points.size() + 1, 0);
+    return d;
+}
+
+}  // namespace detail
+}  // namespace exidel::delaunay
