@@ -34,6 +34,10 @@ def run_gappa(gappa, script):
     out = proc.stdout + proc.stderr
     if proc.returncode != 0 or "not satisfied" in out:
         sys.exit(f"{script}: Gappa did not prove every goal:\n{out}")
+    if "not trivially equal" in out:
+        # A rewriting hint that is not an identity: Gappa would still answer, with the
+        # difference as an extra error, but the script's reading of the goal assumes it is.
+        sys.exit(f"{script}: a rewriting hint is not an identity:\n{out}")
     goals = {}
     for line in out.splitlines():
         m = RESULT.match(line)
@@ -240,6 +244,136 @@ def main():
         # (sympy/cosine_check.py checks these degrees symbolically).
         claims.append((name.replace("max_log", "degree"), "min", Q(degree)))
 
+    # ---- the circumcentre (bounds.md#circumcenter) ------------------------------------------
+    # Hypotheses of the derivation (the range conditions of construct.cpp), claimed against
+    # constants.hpp: M = max |rounded difference| in [min_scale, max_scale], every nonzero
+    # rounded difference at least M min_part, |a|, |s| <= max_offset, w = a - s zero or at
+    # least min_offset (stage 1: u zero or at least min_offset). Every range below is
+    # derived from these five values.
+    min_scale, max_scale, min_part = Q(2) ** -150, Q(2) ** 150, Q(2) ** -100
+    min_off, max_off = Q(2) ** -400, Q(2) ** 400
+    claims.append(("circumcenter_min_scale", "min", min_scale))
+    claims.append(("circumcenter_max_scale", "max", max_scale))
+    claims.append(("circumcenter_min_part", "min", min_part))
+    claims.append(("circumcenter_min_offset", "min", min_off))
+    claims.append(("circumcenter_max_offset", "max", max_off))
+    eps = Q(1, 2 ** 53)       # bounds::epsilon, a factor in the code's formulas
+    normal = Q(2) ** -1021    # R1 and R2 hold from here up (rounding.g, rounding_result.g)
+    huge = Q(2) ** 1023
+
+    def require(ok, what):
+        if not ok:
+            sys.exit(f"circumcenter: range condition fails: {what}")
+
+    m_lo = min_scale * min_part   # smallest nonzero |rounded difference| (2^-250)
+    m_hi = max_scale * (1 + e)    # largest |exact difference|
+    x_lo = m_lo * (1 - e)         # smallest nonzero |exact difference|
+
+    # Stage 1, F1: |d - D| <= circumcenter_float_rel * fl(|p1| + |p2|), the same for N.
+    # Every product of two (three) nonzero differences is at least m_lo^2 (m_lo^3 (1-e)^2):
+    # no product underflows, so R1 holds for every operation (sums: estimate_step.g).
+    require(m_lo ** 3 * (1 - e) ** 2 >= normal, "stage 1 products are normal")
+    require(8 * (1 + e) ** 5 * max_scale ** 3 < huge, "stage 1 products are finite")
+    # D's monomial: two rounded differences and the product (orient_term.g), relative to
+    # the exact monomial; relative to the computed one it is d3 / (1 - d3). The final
+    # subtraction adds e |p1 - p2|, and |p1| + |p2| <= (1 + e) fl(|p1| + |p2|).
+    d3 = max(delta(3), term_rel)
+    c_d = (e + d3 / (1 - d3)) * (1 + e)
+    # N's monomial cy (bx^2 + by^2): the difference cy, the square (distance_term.g: a
+    # rounded difference squared, rounded), the sum of the two squares (nonnegative), the
+    # product: six roundings; then the subtraction and the permanent's sum, as for D.
+    d6 = max(delta(6), (1 + e) ** 3 * (1 + square_rel) - 1)
+    c_n = (e + d6 / (1 - d6)) * (1 + e)
+    claims.append(("circumcenter_float_rel", "min", max(c_d, c_n)))
+
+    # Stage 1, F2: the offset's bound. The quotient u = fl(n fl(1 / (2d))) has the relative
+    # error q_rel (circumcenter_quotient.g) against q = n / (2d), given the ranges below.
+    quot = run_gappa(gappa, "circumcenter_quotient.g")
+    q_rel = magnitude(quot, "u -/ q")
+    # The ranges the Gappa script assumes (n, d > 0 by symmetry), against those derived:
+    #   |d| > 2 ed >= 16 eps (1-e) (M part)^2 and |d| <= 2 (1+e)^2 M^2;
+    #   n != 0: |n| >= Qmin 2^-53, Qmin = (1-e)^2 (M part)^3 the smallest nonzero computed
+    #   product (both products are multiples of 2^(floor(log2 Qmin) - 52)); |n| <= 4(1+e)^4 M^3;
+    #   q = n / (2d) in [|n|min / (4 (1+e)^2 M^2), 4 (1+e)^4 M^3 / (32 eps (1-e) (M part)^2)].
+    d_lo = 16 * eps * (1 - e) * m_lo ** 2
+    d_hi = 2 * (1 + e) ** 2 * max_scale ** 2
+    n_lo = (1 - e) ** 2 * m_lo ** 3 * Q(2) ** -53
+    n_hi = 4 * (1 + e) ** 4 * max_scale ** 3
+    # |q| >= |n| / |2d| >= (1-e)^2 (M part)^3 2^-53 / (4 (1+e)^2 M^2): smallest at M = min_scale.
+    q_lo = (1 - e) ** 2 * min_part ** 3 * min_scale * Q(2) ** -55 / (1 + e) ** 2
+    q_hi = max_scale * (1 + e) ** 4 / (8 * eps * (1 - e) * min_part ** 2)
+    require(Q(2) ** -560 <= d_lo and d_hi <= Q(2) ** 310, "d in circumcenter_quotient.g's range")
+    require(Q(2) ** -810 <= n_lo and n_hi <= Q(2) ** 460, "n in circumcenter_quotient.g's range")
+    require(Q(2) ** -510 <= q_lo and q_hi <= Q(2) ** 1000, "q in circumcenter_quotient.g's range")
+    # The bound's own operations are normal: 2 |u| ed >= 2 min_offset ed (u != 0), 2 eps |u|,
+    # and en slack >= 8 eps Qmin (1-e) / ((1+e)^3 2 M^2) (en != 0), smallest at M = min_scale.
+    require(2 * min_off * 8 * eps * (1 - e) * m_lo ** 2 >= normal, "2 |u| ed is normal")
+    require(2 * eps * min_off >= normal, "2 eps |u| is normal")
+    en_slack_lo = (8 * eps * (1 - e) ** 3 * min_part ** 3 * min_scale
+                   / (2 * (1 + e) ** 3))
+    require(en_slack_lo / 2 >= normal, "en slack is normal")
+    # |N/(2D) - u| <= (X/2 + q_rel |u|) / (1 - q_rel),  X = (en + 2|u| ed) / (|d| - ed);
+    # computed e >= (1-e)^2 (1+f) [(1-e)^4 / (1+e) X/2 + 2 eps |u|]: f covers both terms when
+    f_x = (1 + e) / ((1 - e) ** 6 * (1 - q_rel)) - 1
+    f_u = q_rel / (2 * eps * (1 - e) ** 2 * (1 - q_rel)) - 1
+    # (the checker compares the code's factor minus 1 with this excess)
+    claims.append(("circumcenter_float_factor", "min", max(f_x, f_u)))
+    # F3: fl(fl(|r| + e)(1 + m)) < h implies |r| + e < h when (1-e)^2 (1 + m) >= 1
+    # (|r| + e is 0 or at least min(2 eps min_offset, en slack / 2): normal).
+    margin_1 = 1 / (1 - e) ** 2 - 1
+
+    # Stage 2, lemma DW: add errs by at most alpha (|x| + |y|), mul by beta |x||y| plus the
+    # absolute underflow terms (bounds.md); alpha, beta relative to the double words' values
+    # (|xh| <= |x| / (1 - e) for a normalized double word).
+    if e > Q(1, 2 ** 53):
+        sys.exit("dw_product.g assumes one rounding errs by at most 2^-53")
+    dwp = run_gappa(gappa, "dw_product.g")
+    beta_h = max(magnitude(dwp, "err"), e ** 2 * (8 + 6 * e + 2 * e ** 2))
+    beta = beta_h / (1 - e) ** 2
+    alpha = e ** 2 * (3 + e) / (1 - e)
+    # Underflow: each of mul's two low products may add eta (P), carried through c's and w's
+    # roundings; Two-Product is exact when |xh yh| >= 2^-969 (Boldo 2006, for Dekker's
+    # algorithm; with a fused multiply-add as well), and otherwise (only 2D w can be that
+    # small) errs by at most tp_err: Dekker's four products and four sums, each exact
+    # result at most (1+e)^4 (((1 + 2^-25)^2 + 1) A + 4 eta) with A = |ab| < 2^-969.
+    u_low = (1 + e) ** 2 * 2 * eta
+    tp_a = Q(2) ** -969
+    split = (1 + Q(2) ** -25) ** 2
+    tp_err = e * split * tp_a + 4 * eta + 4 * e * (1 + e) ** 4 * ((split + 1) * tp_a + 4 * eta)
+    u_tp = (1 + e) * tp_err
+    # Smallest nonzero permanents of the products (the exact differences are 0 or >= x_lo):
+    t1_min = x_lo ** 2                       # X Y (D's monomials, the squares)
+    t3_min = x_lo ** 3                       # CY BB and the like (N's monomials)
+    t4_min = 2 * x_lo ** 2 * (1 - e) * min_off   # 2 T_D |w|, w != 0
+    require(m_lo ** 2 >= tp_a and (1 - e) ** 4 * m_lo ** 3 >= tp_a, "the differences' Two-Products are exact")
+    # 2 D.hi w.hi: |D.hi| > 2 d_error >= 2 eps^2 m_lo^2 (circumcenter_rel >= eps^2, below), so
+    # the product is normal and Dekker's split of 2 D.hi is exact (no operation underflows).
+    a_lo = 4 * e ** 2 * m_lo ** 2
+    require(a_lo * min_off >= normal and min(a_lo, min_off) * Q(2) ** -53 >= Q(2) ** -1022,
+            "2 D w does not underflow")
+    theta_1 = beta + u_low / t1_min
+    theta_d = theta_1 * (1 + alpha) + alpha          # D = add(mul, -mul); also |b|^2, |c|^2
+    theta_bb = theta_d
+    theta_3 = (1 + beta) * (1 + theta_bb) - 1 + u_low / t3_min
+    theta_n = theta_3 * (1 + alpha) + alpha
+    theta_4 = (1 + beta) * (1 + theta_d) - 1 + (u_low + u_tp) / t4_min
+    theta_f = max(theta_n, theta_4) * (1 + alpha) + alpha
+    # The permanents the code computes from the high parts: T_N <= kappa_n tn,
+    # 2 T_D |w| <= (1+e)^5 2 td |w.hi|, and tn + 2 td |w.hi| <= (1+e)^2 fl(...).
+    kappa = max((1 + e) ** 4 / (1 - theta_bb), (1 + e) ** 5)
+    # |D~ - D| <= d_error and |F~ - F| <= (1 + e) f_error:
+    rel = max(theta_d * (1 + e) ** 4, theta_f * kappa * (1 + e))
+    require(rel >= e ** 2, "circumcenter_rel >= eps^2 (used above)")
+    claims.append(("circumcenter_rel", "min", rel))
+    # f_error is 0 or normal (then lhs is normal too); everything stays finite:
+    require(e ** 2 * min(t3_min, t4_min) * (1 - e) ** 4 >= normal, "f_error is normal")
+    t_f_max = 4 * (1 + e) ** 3 * m_hi ** 3 + 2 * 2 * m_hi ** 2 * 2 * max_off * (1 + e)
+    require(4 * t_f_max < huge, "stage 2 finite")
+    # The acceptance test: (1-e)^2 (1+m) lhs-side against (1+e)^3 (1-m) rhs-side, and
+    # |F| <= (1+e)(|F.hi| + f_error), |D| >= (1-e)(|D.hi| - d_error):
+    g = (1 + e) ** 4 / (1 - e) ** 3
+    claims.append(("circumcenter_margin", "min", max(margin_1, (g - 1) / (g + 1))))
+
     with open(output, "w") as f:
         f.write("# Proven bounds, written by proofs/derive_bounds.py from Gappa's output.\n")
         f.write("# A trailing if=CONDITION: proven only if that statement (bounds.md) holds.\n")
@@ -248,7 +382,9 @@ def main():
             f.write(f"{name} {kind} {value.numerator}/{value.denominator}{tail}\n")
     for name, kind, value, *condition in claims:
         unit = "eps" if value < Q(1, 2**40) and value > Q(1, 2**70) else ""
-        shown = float(value / Q(1, 2**53)) if unit else float(value)
+        if value < Q(1, 2**90) and value > Q(1, 2**120) and value.numerator != 1:
+            unit = "eps^2"  # (a power of two, a hypothesis, is shown as it is)
+        shown = float(value / (Q(1, 2**53) if unit == "eps" else Q(1, 2**106))) if unit else float(value)
         tail = "".join(f" (if {c})" for c in condition)
         print(f"{name:20s} {kind} {shown!r} {unit}{tail}")
 

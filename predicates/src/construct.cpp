@@ -1,7 +1,9 @@
 // exidel: the correctly rounded circumcentre (construct.hpp).
 //
-// Stage 1 (floating point, proofs/bounds.md#circumcenter) and stage 2 (exact integers,
-// rounded once) are each readable on their own; circumcenter() is "stage 1, else stage 2".
+// Three stages, each readable on its own (proofs/bounds.md#circumcenter for the first
+// two): 1, plain doubles with an error bound; 2, a double-word proposal verified by a
+// double-word evaluation; 3, exact integers rounded once. circumcenter() tries them in
+// that order; each accepts only a value it has proven to be the nearest double.
 #include "exidel/predicates/construct.hpp"
 
 #include <gmp.h>
@@ -60,9 +62,10 @@ Circumcenter classify(Point2 p) noexcept {
 // Double-word arithmetic: a value is hi + lo with |lo| <= eps |hi| (lo is hi's rounding
 // error). Two-Sum and Two-Product are exact; the sum and product below err by at most
 // (3 + O(eps)) eps^2 (|x| + |y|) and (8 + O(eps)) eps^2 |x| |y| (proofs/bounds.md#circumcenter,
-// lemma DW; the algorithms are the classical ones, e.g. Joldes, Muller and Popescu 2017,
-// "Tight and rigorous error bounds for basic building blocks of double-word arithmetic",
-// ACM TOMS 44(2), Algorithms 6 and 10, whose tighter relative bounds we do not rely on).
+// lemma DW). They are the classical "sloppy" sum and the product of Joldes, Muller and
+// Popescu 2017, "Tight and rigorous error bounds for basic building blocks of double-word
+// arithmetic", ACM TOMS 44(2): the sum has no bound relative to its result, which is why
+// the proof bounds every error against the operands' magnitudes (permanents) instead.
 
 struct Word {
     double hi;
@@ -211,7 +214,7 @@ struct Frame {
     double td;         ///< D's permanent
 };
 
-/// base + N / (2 D), if stage 1 certifies the nearest double (bounds.md claim C2).
+/// base + N / (2 D), if stage 2 certifies the nearest double (bounds.md#circumcenter).
 std::optional<double> coordinate(double base, Word n, double tn, const Frame& f) noexcept {
     // Propose: x ~ base + q1 + q2, q1 the quotient of the high parts, q2 its correction.
     const double two_d = 2.0 * f.d.hi;
@@ -255,7 +258,7 @@ std::optional<Point2> double_word_stage(const Differences& t) noexcept {
     return Point2{*x, *y};
 }
 
-// ---- stage 2 ------------------------------------------------------------------------------
+// ---- stage 3: exact integers ----------------------------------------------------------------
 
 /// An mpz_t that frees itself.
 class Int {
@@ -387,6 +390,16 @@ inline Circumcenter decide(Point2 a, Point2 b, Point2 c) noexcept {
 }  // namespace
 
 Circumcenter circumcenter(Point2 a, Point2 b, Point2 c) noexcept { return decide(a, b, c); }
+
+double round_quotient(std::span<const std::uint64_t> num, std::span<const std::uint64_t> den,
+                      bool negative, long exp2) noexcept {
+    Int n, d;
+    mpz_import(n.get(), num.size(), -1, sizeof(std::uint64_t), 0, 0, num.data());
+    mpz_import(d.get(), den.size(), -1, sizeof(std::uint64_t), 0, 0, den.data());
+    if (mpz_sgn(d.get()) == 0) return nan;
+    if (negative) mpz_neg(n.get(), n.get());
+    return round_quotient(n.get(), d.get(), exp2);
+}
 
 void circumcenters(std::span<const Point2> points, std::span<const std::uint32_t> triangles,
                    std::span<Circumcenter> out, std::uint64_t* stage_counts) noexcept {

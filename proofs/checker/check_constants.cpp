@@ -52,6 +52,16 @@ std::map<std::string, Rational> code_constants() {
         {"radial_key_rel", Rational(b::radial_key_rel)},
         {"radial_key_min", Rational(b::radial_key_min)},
         {"radial_key_max", Rational(b::radial_key_max)},
+        {"circumcenter_rel", Rational(b::circumcenter_rel)},
+        {"circumcenter_float_rel", Rational(b::circumcenter_float_rel)},
+        // A factor 1 + f: the proof claims its excess f (bounds.md#circumcenter, F2).
+        {"circumcenter_float_factor", Rational(b::circumcenter_float_factor) - 1},
+        {"circumcenter_margin", Rational(b::circumcenter_margin)},
+        {"circumcenter_min_scale", Rational(b::circumcenter_min_scale)},
+        {"circumcenter_max_scale", Rational(b::circumcenter_max_scale)},
+        {"circumcenter_min_part", Rational(b::circumcenter_min_part)},
+        {"circumcenter_min_offset", Rational(b::circumcenter_min_offset)},
+        {"circumcenter_max_offset", Rational(b::circumcenter_max_offset)},
     };
 }
 

@@ -299,5 +299,130 @@ TEST(Voronoi, InexactKernelStillGivesCorrectlyRoundedVertices) {
     }
 }
 
+/// Checks a clipped diagram against the diagram it came from (RC_ASSERT).
+void check_clipped(std::span<const Point2> points, const Triangulation& t, const VoronoiDiagram& d,
+                   const delaunay::ClippedVoronoi& c, const delaunay::Box& box) {
+    const std::size_t n = points.size();
+    RC_ASSERT(c.site_count() == n);
+    for (std::size_t v = 0; v < c.vertex_count(); ++v) {
+        const Point2 p = c.vertices[v];
+        // Rounding is monotone and the bounds are doubles: exact inside => rounded inside.
+        RC_ASSERT(box.xmin <= p.x && p.x <= box.xmax && box.ymin <= p.y && p.y <= box.ymax);
+        // A point the box adds is a corner of exactly the cells of its sites. (A Voronoi
+        // vertex lists every site equidistant from it, also one whose clipped cell only
+        // touches the box there and is therefore empty.)
+        if (v < c.voronoi_vertex_count) continue;
+        for (const std::uint32_t i : c.vertex_sites(v)) {
+            const auto cell = c.cell(i);
+            RC_ASSERT(std::find(cell.begin(), cell.end(), v) != cell.end());
+        }
+    }
+    long double area = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto cell = c.cell(i);
+        for (const std::uint32_t v : cell) {
+            const auto sites = c.vertex_sites(v);
+            RC_ASSERT(std::find(sites.begin(), sites.end(), static_cast<std::uint32_t>(i)) != sites.end());
+        }
+        // A bounded cell strictly inside the box is kept as it is.
+        const auto whole = d.cell(i);
+        const bool strictly_inside = !d.collinear && d.unbounded[i] == 0 &&
+            std::all_of(whole.begin(), whole.end(), [&](std::uint32_t v) {
+                const Point2 p = d.vertices[v];
+                return box.xmin < p.x && p.x < box.xmax && box.ymin < p.y && p.y < box.ymax;
+            });
+        if (strictly_inside) {
+            RC_ASSERT(cell.size() == whole.size());
+            for (std::size_t k = 0; k < cell.size(); ++k) RC_ASSERT(c.vertices[cell[k]] == d.vertices[whole[k]]);
+        }
+        if (t.vertex_of_input[i] != i) continue;  // a duplicate's cell is its twin's
+        for (std::size_t k = 0; k < cell.size(); ++k) {
+            // Relative to the box's corner, so the shoelace does not cancel.
+            const Point2 a = c.vertices[cell[k]], b = c.vertices[cell[(k + 1) % cell.size()]];
+            const long double ax = static_cast<long double>(a.x) - box.xmin, ay = static_cast<long double>(a.y) - box.ymin;
+            const long double bx = static_cast<long double>(b.x) - box.xmin, by = static_cast<long double>(b.y) - box.ymin;
+            area += ax * by - bx * ay;
+        }
+    }
+    // The cells tile the box (up to the rounding of the corners).
+    if (n > 0) {
+        const long double box_area = 2.0L * (box.xmax - box.xmin) * (box.ymax - box.ymin);
+        RC_ASSERT(std::fabs(static_cast<double>(area - box_area)) <= 1e-9 * static_cast<double>(box_area));
+    }
+}
+
+TEST(Voronoi, ClippedCellsTileTheBox) {
+    for (const std::string family : {"uniform", "integer_grid", "lattice_circle", "gaussian", "duplicates",
+                                     "dyadic_line", "near_integer_grid"}) {
+        const bool ok = rc::check("clip on " + family, [&] {
+            const std::size_t n = *rc::gen::inRange<std::size_t>(0, 40);
+            const std::vector<Point2> points = *gen_family_points(family, n);
+            const auto r = delaunay::triangulate(points, AdaptiveKernel{});
+            RC_ASSERT(r.ok());
+            VoronoiDiagram d;
+            try {
+                d = delaunay::voronoi(points, r.triangulation, AdaptiveKernel{});
+            } catch (const delaunay::VoronoiError& e) {  // checked in EveryFamily*
+                RC_DISCARD("a vertex beyond the largest double");
+            }
+            // A box around the middle of the points' bounding box (and one around nothing).
+            double x0 = 0, y0 = 0, x1 = 1, y1 = 1;
+            if (!points.empty()) {
+                x0 = x1 = points[0].x;
+                y0 = y1 = points[0].y;
+                for (const Point2& p : points) {
+                    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x);
+                    y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+                }
+            }
+            const double shrink = *rc::gen::element(0.0, 0.1, 0.3, -0.2);
+            const double w = std::max(x1 - x0, 1.0), h = std::max(y1 - y0, 1.0);
+            const delaunay::Box box{x0 + shrink * w, y0 + shrink * h, x1 - shrink * w, y1 - shrink * h};
+            RC_PRE(box.xmin < box.xmax && box.ymin < box.ymax);
+            const delaunay::ClippedVoronoi c = delaunay::clip(d, points, r.triangulation, box);
+            check_clipped(points, r.triangulation, d, c, box);
+        });
+        EXPECT_TRUE(ok) << family;
+    }
+}
+
+TEST(Voronoi, VerticesOnTheBoxAreVoronoiVertices) {
+    // A 5 x 5 grid: every vertex is the centre of a square of four cocircular sites, at
+    // half-integers; the box's corners and sides go exactly through some of them.
+    std::vector<Point2> points;
+    for (int x = 0; x < 5; ++x)
+        for (int y = 0; y < 5; ++y) points.push_back({double(x), double(y)});
+    const auto r = delaunay::triangulate(points, AdaptiveKernel{});
+    ASSERT_TRUE(r.ok());
+    const VoronoiDiagram d = delaunay::voronoi(points, r.triangulation, AdaptiveKernel{});
+    EXPECT_EQ(d.vertex_count(), 16u);  // one per unit square
+    const delaunay::Box box{0.5, 0.5, 3.5, 2.5};
+    const delaunay::ClippedVoronoi c = delaunay::clip(d, points, r.triangulation, box);
+    // Vertices in the closed box: x in {0.5 .. 3.5} (4 values) times y in {0.5 .. 2.5} (3).
+    EXPECT_EQ(c.voronoi_vertex_count, 12u);
+    // Every bisector crosses the box's boundary at a Voronoi vertex here: nothing added.
+    EXPECT_EQ(c.vertex_count(), 12u);
+    std::set<std::pair<double, double>> distinct;
+    for (const Point2& p : c.vertices) distinct.insert({p.x, p.y});
+    EXPECT_EQ(distinct.size(), c.vertex_count());
+    // The 6 sites with cells inside the box: (1..3, 1..2), each a unit square.
+    std::size_t nonempty = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        if (c.cell(i).empty()) continue;
+        ++nonempty;
+        EXPECT_EQ(c.cell(i).size(), 4u) << i;
+    }
+    EXPECT_EQ(nonempty, 6u);
+}
+
+TEST(Voronoi, ClipRejectsABoxWithoutInterior) {
+    const std::vector<Point2> points = {{0, 0}, {1, 0}, {0, 1}};
+    const auto r = delaunay::triangulate(points, AdaptiveKernel{});
+    const VoronoiDiagram d = delaunay::voronoi(points, r.triangulation, AdaptiveKernel{});
+    EXPECT_THROW(delaunay::clip(d, points, r.triangulation, {0, 0, 0, 1}), std::invalid_argument);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_THROW(delaunay::clip(d, points, r.triangulation, {0, 0, nan, 1}), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace exidel::test

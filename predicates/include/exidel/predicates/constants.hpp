@@ -106,15 +106,15 @@ inline constexpr double cos_max_dot_rel = 0.25;
 inline constexpr double cos_min_factor = 0x1p-1000;
 
 // ---- the circumcentre construction (construct.hpp) --------------------------------------
-// Stage 1 works in double-word arithmetic (a value is an unevaluated sum hi + lo of two
+// Stage 2 works in double-word arithmetic (a value is an unevaluated sum hi + lo of two
 // doubles): the differences b - a, c - a exactly (Two-Diff), D = bx cy - by cx and
 // Nx = cy |b|^2 - by |c|^2 (Ny alike) by double-word products and sums. It proposes the
 // nearest double s to the centre x = a.x + Nx / (2 D), then evaluates
 //     F = Nx + 2 D (a.x - s) = 2 D (x - s)          (a.x - s exact by Two-Diff)
 // and accepts s only when |F| + its error bound < 2 (|D| - D's error bound) h, h half the
 // smaller gap from s to a neighbour double: then |x - s| < h, and s is the nearest double.
-// proofs/bounds.md#circumcenter proves |D~ - D| <= (20 + O(eps)) eps^2 T_D and
-// |F~ - F| <= (44 + O(eps)) eps^2 (T_N + 2 T_D |a.x - s|), with T the permanents
+// proofs/bounds.md#circumcenter proves |D~ - D| <= (11 + O(eps)) eps^2 T_D and
+// |F~ - F| <= (25 + O(eps)) eps^2 (T_N + 2 T_D |a.x - s|), with T the permanents
 // (the polynomials with every monomial's absolute value), under the range conditions
 // below; circumcenter_rel = 2^-99 = 128 eps^2 covers both with room for the O(eps) terms,
 // for gradual underflow inside the low parts, and for the permanents being evaluated in
@@ -124,8 +124,8 @@ inline constexpr double circumcenter_rel = 0x1p-99;
 /// most this times the computed permanent. At most 4 (D) and 7 (N) roundings per monomial,
 /// the difference's included: gamma_7 / (1 - eps)^7 = (7 + O(eps)) eps. A power of two.
 inline constexpr double circumcenter_float_rel = 8.0 * epsilon;
-/// Stage 1's bound on the offset, fl(fl(E1 / 2) + eps |u|), times this covers the at most
-/// six roundings of its own evaluation.
+/// Stage 1's bound on the offset, fl(fl(E1 / 2) + 2 eps |u|), times this covers the
+/// roundings of its own evaluation (proofs/bounds.md#circumcenter proves 1 + 9 eps + O(eps^2)).
 inline constexpr double circumcenter_float_factor = 1.0 + 16.0 * epsilon;
 /// Relative margin for the few double operations that evaluate the acceptance test
 /// itself (at most 12 roundings, each at most eps = 2^-53).

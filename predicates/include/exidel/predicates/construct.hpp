@@ -65,6 +65,13 @@ Circumcenter circumcenter(Point2 a, Point2 b, Point2 c) noexcept;
 void circumcenters(std::span<const Point2> points, std::span<const std::uint32_t> triangles,
                    std::span<Circumcenter> out, std::uint64_t* stage_counts = nullptr) noexcept;
 
+/// The quotient num / den * 2^exp2, negated when `negative`, rounded to nearest (ties to
+/// even) with gradual underflow and overflow to infinity: stage 3's one rounding, for
+/// other exact constructions (the clipped Voronoi diagram's corners). num and den are
+/// magnitudes in little-endian 64-bit words; den must be nonzero (else NaN).
+double round_quotient(std::span<const std::uint64_t> num, std::span<const std::uint64_t> den,
+                      bool negative, long exp2 = 0) noexcept;
+
 /// Stage 3 alone: the exact rational circumcentre rounded once (the reference the fast
 /// path is tested against; always correct, much slower).
 Circumcenter circumcenter_exact(Point2 a, Point2 b, Point2 c) noexcept;

@@ -91,6 +91,47 @@ private:
     CircumcenterStatus status_;
 };
 
+/// An axis-parallel box, xmin < xmax and ymin < ymax, finite.
+struct Box {
+    double xmin, ymin, xmax, ymax;
+};
+
+/// The diagram intersected with a box: every cell a convex polygon (possibly empty).
+/// Its vertices are the Voronoi vertices inside the box or on its boundary, in the order
+/// of VoronoiDiagram::vertices, followed by the points the box adds (where a Voronoi edge
+/// crosses the boundary, and the box's corners), in order of first appearance. Every
+/// vertex is the correctly rounded value of an exact point (the clipping is done in
+/// exact rationals). A Voronoi vertex lists its sites as in the diagram (every site
+/// exactly equidistant, also one whose cell only touches the box at that vertex and is
+/// therefore empty after clipping); a point the box adds lists the sites whose clipped
+/// cells have it as a corner (with their duplicates), by input index.
+struct ClippedVoronoi {
+    std::vector<Point2> vertices;
+    std::vector<std::uint32_t> site_offsets{0};
+    std::vector<std::uint32_t> sites;
+    std::vector<std::uint32_t> cell_offsets{0};
+    std::vector<std::uint32_t> cell_vertices;
+    /// As in the unclipped diagram: whether the cell itself is unbounded.
+    std::vector<std::uint8_t> unbounded;
+    /// How many of the vertices are Voronoi vertices (the rest the box added).
+    std::size_t voronoi_vertex_count = 0;
+
+    std::size_t vertex_count() const noexcept { return vertices.size(); }
+    std::size_t site_count() const noexcept { return cell_offsets.size() - 1; }
+    std::span<const std::uint32_t> vertex_sites(std::size_t v) const noexcept {
+        return std::span(sites).subspan(site_offsets[v], site_offsets[v + 1] - site_offsets[v]);
+    }
+    std::span<const std::uint32_t> cell(std::size_t i) const noexcept {
+        return std::span(cell_vertices)
+            .subspan(cell_offsets[i], cell_offsets[i + 1] - cell_offsets[i]);
+    }
+};
+
+/// `d` (the diagram of `points`, triangulated by `t`) clipped to `box`. Throws
+/// std::invalid_argument for a box that is not finite or has no interior.
+ClippedVoronoi clip(const VoronoiDiagram& d, std::span<const Point2> points, const Triangulation& t,
+                    const Box& box);
+
 namespace detail {
 
 /// The kernel-independent work: circumcentres, the candidate pairs, the groups and the
