@@ -308,8 +308,10 @@ double round_quotient(mpz_srcptr num, mpz_srcptr den, long exp2) noexcept {
             mpz_mul_2exp(dd.get(), den, static_cast<mp_bitcnt_t>(-shift));
         }
         mpz_fdiv_qr(q.get(), r.get(), q.get(), dd.get());
-        if (mpz_sizeinbase(q.get(), 2) <= 53 || quantum == -1074) break;
-        ++quantum;  // the value was in the upper binade: one bit too many
+        if (mpz_sizeinbase(q.get(), 2) <= 53) break;
+        // The value was in the upper binade: one bit too many. (Also from the clamp at
+        // -1074: a value in [2^-1021, 2^-1020) is normal, its last bit is 2^-1073.)
+        ++quantum;
     }
     // Round: up when the remainder is above half, or exactly half and q is odd.
     mpz_mul_2exp(r.get(), r.get(), 1);

@@ -424,5 +424,24 @@ TEST(Voronoi, ClipRejectsABoxWithoutInterior) {
     EXPECT_THROW(delaunay::clip(d, points, r.triangulation, {0, 0, nan, 1}), std::invalid_argument);
 }
 
+// Regression, shrunk by RapidCheck from near_lattice_circle: a vertex just above the
+// subnormal range (about 2^-1020) was rounded with one bit too many by circumcenter's
+// exact stage. Now every vertex must match the oracle.
+TEST(VoronoiRegression, CentreJustAboveTheSubnormalRange) {
+    const double a = 0x1p-1020, tiny = 0x0.0000000000001p-1022;
+    const std::vector<Point2> points = {
+        {a, 0}, {a, 0}, {a, 0}, {a, 0}, {a, 0}, {a, 0}, {a, 0}, {a, 0}, {a, 0}, {a, tiny},
+        {a, 0}, {a, 0}, {a, 0}, {0x1.ffffffp-1021, -0x0.000006p-1022}, {a, 0},
+        {0x1.fffffffffffffp-1021, 0}, {a, 0}, {a, 0}};
+    for (const bool exact_kernel : {false, true}) {
+        const auto r = exact_kernel ? delaunay::triangulate(points, GmpExactKernel{})
+                                    : delaunay::triangulate(points, AdaptiveKernel{});
+        ASSERT_TRUE(r.ok());
+        const VoronoiDiagram d = delaunay::voronoi(points, r.triangulation, AdaptiveKernel{});
+        const bool ok = rc::check("the regression's diagram", [&] { check_diagram(points, r.triangulation, d); });
+        EXPECT_TRUE(ok);
+    }
+}
+
 }  // namespace
 }  // namespace exidel::test

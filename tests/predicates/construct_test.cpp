@@ -78,6 +78,22 @@ TEST(Circumcenter, IsCorrectlyRoundedAtEveryScale) {
     }
 }
 
+// Regression (found by the Voronoi property test on near_lattice_circle): a centre in
+// [2^-1021, 2^-1020), just above the subnormal range, was rounded with the subnormal
+// quantum 2^-1074 (one bit too many) by stage 3. The same queries scaled to put the
+// centre near the normal/subnormal boundary, where that clamp matters.
+TEST(Circumcenter, IsCorrectlyRoundedAtTheSubnormalBoundary) {
+    for (const testing::FamilyInfo& f : testing::all_families()) {
+        const bool ok = rc::check("circumcenter near 2^-1022, " + std::string(f.name), [&] {
+            const auto [a, b, c] = *testing::gen_query3(f.family);
+            const int k = *rc::gen::inRange(-1026, -1014);
+            const auto move = [&](Point2 p) { return Point2{std::ldexp(p.x, k), std::ldexp(p.y, k)}; };
+            check_against_oracle(circumcenter, move(a), move(b), move(c));
+        });
+        EXPECT_TRUE(ok) << f.name;
+    }
+}
+
 TEST(Circumcenter, FastStageDecidesRandomTriangles) {
     // Uniform random triangles in the unit square are far from every tie and every range
     // limit: stage 1 must decide nearly all of them (a filter that never fires would still

@@ -43,6 +43,7 @@ struct Duplicates {
     /// Appends site s and then its duplicates.
     void append(std::uint32_t s, std::vector<std::uint32_t>& out) const {
         out.push_back(s);
+        if (items.empty()) return;  // no duplicates: skip the lookup (a cache miss per site)
         out.insert(out.end(), items.begin() + offsets[s], items.begin() + offsets[s + 1]);
     }
 };
@@ -125,16 +126,16 @@ VoronoiDiagram VoronoiBuilder::finish(std::uint64_t tests) && {
     // The sites of each vertex: a triangle's three corners, or the boundary of a group's
     // union (a convex polygon inscribed in the circle), counter-clockwise, from the
     // smallest index. Boundary half-edges of the merged groups, bucketed by vertex:
-    std::vector<std::uint32_t> boundary_offsets(d.vertices.size() + 1, 0), boundary;
+    std::vector<std::uint32_t> boundary_offsets(merges_ > 0 ? d.vertices.size() + 1 : 0, 0), boundary;
     const auto on_group_boundary = [&](std::size_t e) {
         const std::uint32_t v = vertex_of_edge(e);
         return group_size[v] > 1 && (twin[e] < 0 || vertex_of_edge(twin[e]) != v);
     };
-    for (std::size_t e = 0; e < tri.size(); ++e)
-        if (on_group_boundary(e)) ++boundary_offsets[vertex_of_edge(e) + 1];
-    std::partial_sum(boundary_offsets.begin(), boundary_offsets.end(), boundary_offsets.begin());
-    boundary.resize(boundary_offsets.back());
-    {
+    if (merges_ > 0) {  // else every group is one triangle
+        for (std::size_t e = 0; e < tri.size(); ++e)
+            if (on_group_boundary(e)) ++boundary_offsets[vertex_of_edge(e) + 1];
+        std::partial_sum(boundary_offsets.begin(), boundary_offsets.end(), boundary_offsets.begin());
+        boundary.resize(boundary_offsets.back());
         std::vector<std::uint32_t> fill(boundary_offsets.begin(), boundary_offsets.end() - 1);
         for (std::size_t e = 0; e < tri.size(); ++e)
             if (on_group_boundary(e)) boundary[fill[vertex_of_edge(e)]++] = static_cast<std::uint32_t>(e);
@@ -171,42 +172,35 @@ VoronoiDiagram VoronoiBuilder::finish(std::uint64_t tests) && {
     }
 
     // The cells: walk counter-clockwise around every site from its hull edge (if it is on
-    // the hull) through the triangles' vertices, merging repeats of one vertex.
+    // the hull) through the triangles' vertices, merging repeats of one vertex. Sites are
+    // walked in the order they first appear in the triangle array, not in input order:
+    // neighbouring sites then touch neighbouring triangles (the walk's memory accesses
+    // stay in cache), and the cells are put in input order afterwards.
     constexpr std::uint32_t none = 0xffffffffu;
-    std::vector<std::uint32_t> start(n, none);
-    for (std::size_t e = 0; e < tri.size(); ++e)
-        if (twin[e] < 0 || start[tri[e]] == none) start[tri[e]] = static_cast<std::uint32_t>(e);
-    for (std::size_t e = 0; e < tri.size(); ++e)
-        if (twin[e] < 0) start[tri[e]] = static_cast<std::uint32_t>(e);
+    std::vector<std::uint32_t> start(n, none), order;
+    order.reserve(n);
+    for (std::size_t e = 0; e < tri.size(); ++e) {
+        std::uint32_t& first = start[tri[e]];
+        if (first == none) {
+            order.push_back(tri[e]);
+            first = static_cast<std::uint32_t>(e);
+        } else if (twin[e] < 0) {
+            first = static_cast<std::uint32_t>(e);  // a hull edge: the walk starts there
+        }
+    }
     d.unbounded.assign(n, 0);
     d.entry_ray.assign(n, Point2{0, 0});
     d.exit_ray.assign(n, Point2{0, 0});
-    d.cell_offsets.reserve(n + 1);
-    d.cell_vertices.reserve(3 * n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::uint32_t s = t_.vertex_of_input[i];
-        if (s != i) {  // a duplicate: its twin's cell, already built (s < i)
-            const auto c = d.cell(s);
-            d.cell_vertices.insert(d.cell_vertices.end(), c.begin(), c.end());
-            d.unbounded[i] = d.unbounded[s];
-            d.entry_ray[i] = d.entry_ray[s];
-            d.exit_ray[i] = d.exit_ray[s];
-            d.cell_offsets.push_back(static_cast<std::uint32_t>(d.cell_vertices.size()));
-            continue;
-        }
-        const std::size_t first = d.cell_vertices.size();
+    std::vector<std::uint32_t> walked, walked_at(n, 0), walked_size(n, 0);
+    walked.reserve(tri.size() + n);
+    for (const std::uint32_t s : order) {
+        const std::size_t first = walked.size();
         const std::uint32_t e0 = start[s];
-        if (e0 == none) {  // in no triangle: only possible for an inconsistent structure
-            d.unbounded[i] = 1;
-            d.cell_offsets.push_back(static_cast<std::uint32_t>(first));
-            continue;
-        }
         std::uint32_t e = e0;
         std::int32_t exit_edge = -1;
         for (std::size_t step = 0; step < tri.size(); ++step) {
             const std::uint32_t v = vertex_of_edge(e);
-            if (d.cell_vertices.size() == first || d.cell_vertices.back() != v)
-                d.cell_vertices.push_back(v);
+            if (walked.size() == first || walked.back() != v) walked.push_back(v);
             const std::size_t incoming = prev_halfedge(e);  // (previous neighbour -> s)
             if (twin[incoming] < 0) {
                 exit_edge = static_cast<std::int32_t>(incoming);
@@ -216,13 +210,30 @@ VoronoiDiagram VoronoiBuilder::finish(std::uint64_t tests) && {
             if (e == e0) break;
         }
         if (exit_edge >= 0) {
-            d.unbounded[i] = 1;
-            d.entry_ray[i] = outward_normal(points_[s], points_[tri[next_halfedge(e0)]]);
-            d.exit_ray[i] = outward_normal(points_[tri[static_cast<std::size_t>(exit_edge)]], points_[s]);
-        } else if (d.cell_vertices.size() - first > 1 && d.cell_vertices.back() == d.cell_vertices[first]) {
-            d.cell_vertices.pop_back();  // the walk closed on the vertex it started in
+            d.unbounded[s] = 1;
+            d.entry_ray[s] = outward_normal(points_[s], points_[tri[next_halfedge(e0)]]);
+            d.exit_ray[s] = outward_normal(points_[tri[static_cast<std::size_t>(exit_edge)]], points_[s]);
+        } else if (walked.size() - first > 1 && walked.back() == walked[first]) {
+            walked.pop_back();  // the walk closed on the vertex it started in
         }
-        d.cell_offsets.push_back(static_cast<std::uint32_t>(d.cell_vertices.size()));
+        walked_at[s] = static_cast<std::uint32_t>(first);
+        walked_size[s] = static_cast<std::uint32_t>(walked.size() - first);
+    }
+    // Input order; a duplicate gets its twin's cell, and a site in no triangle (only an
+    // inconsistent structure has one) an empty unbounded cell.
+    d.cell_offsets.assign(n + 1, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint32_t s = t_.vertex_of_input[i];
+        if (start[s] == none) d.unbounded[s] = 1;
+        d.cell_offsets[i + 1] = d.cell_offsets[i] + walked_size[s];
+        d.unbounded[i] = d.unbounded[s];
+        d.entry_ray[i] = d.entry_ray[s];
+        d.exit_ray[i] = d.exit_ray[s];
+    }
+    d.cell_vertices.resize(d.cell_offsets[n]);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint32_t s = t_.vertex_of_input[i];
+        std::copy_n(walked.begin() + walked_at[s], walked_size[s], d.cell_vertices.begin() + d.cell_offsets[i]);
     }
     return d;
 }
