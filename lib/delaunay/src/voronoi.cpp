@@ -1,7 +1,10 @@
 // exidel: the Voronoi diagram's kernel-independent work (voronoi.hpp).
 #include "exidel/delaunay/voronoi.hpp"
 
+#include "exidel/delaunay/parallel.hpp"
+
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <numeric>
@@ -50,9 +53,22 @@ struct Duplicates {
 
 }  // namespace
 
-VoronoiBuilder::VoronoiBuilder(std::span<const Point2> points, const Triangulation& t)
-    : points_(points), t_(t), centres_(t.triangle_count()), parent_(t.triangle_count()) {
-    circumcenters(points, t.triangles, centres_, stage_counts_);
+/// Pieces of the parallel loops: enough to balance two threads, few enough that a job is
+/// long next to handing it out. The output never depends on the thread count.
+constexpr std::size_t parallel_pieces = 64;
+
+VoronoiBuilder::VoronoiBuilder(std::span<const Point2> points, const Triangulation& t, unsigned threads)
+    : points_(points), t_(t), threads_(threads), centres_(t.triangle_count()), parent_(t.triangle_count()) {
+    const std::size_t count = centres_.size();
+    const std::size_t pieces = std::min(parallel_pieces, std::max<std::size_t>(count / 4096, 1));
+    std::vector<std::array<std::uint64_t, 3>> stages(pieces);
+    parallel_for(pieces, threads, [&](std::size_t j) {
+        const std::size_t begin = count * j / pieces, end = count * (j + 1) / pieces;
+        circumcenters(points, std::span(t.triangles).subspan(3 * begin, 3 * (end - begin)),
+                      std::span(centres_).subspan(begin, end - begin), stages[j].data());
+    });
+    for (const auto& piece : stages)
+        for (int k = 0; k < 3; ++k) stage_counts_[k] += piece[k];
     for (std::size_t i = 0; i < centres_.size(); ++i) {
         if (centres_[i].ok()) continue;
         const std::uint32_t* v = &t.triangles[3 * i];
@@ -109,6 +125,9 @@ VoronoiDiagram VoronoiBuilder::finish(std::uint64_t tests) && {
     // group's root is its smallest triangle, so it is numbered before its members).
     d.vertex_of_triangle.resize(triangles);
     std::vector<std::uint32_t> first_triangle, group_size;
+    d.vertices.reserve(triangles);
+    first_triangle.reserve(triangles);
+    group_size.reserve(triangles);
     for (std::uint32_t t = 0; t < triangles; ++t) {
         const std::uint32_t root = find(t);
         if (root == t) {
@@ -191,34 +210,53 @@ VoronoiDiagram VoronoiBuilder::finish(std::uint64_t tests) && {
     d.unbounded.assign(n, 0);
     d.entry_ray.assign(n, Point2{0, 0});
     d.exit_ray.assign(n, Point2{0, 0});
-    std::vector<std::uint32_t> walked, walked_at(n, 0), walked_size(n, 0);
-    walked.reserve(tri.size() + n);
-    for (const std::uint32_t s : order) {
-        const std::size_t first = walked.size();
-        const std::uint32_t e0 = start[s];
-        std::uint32_t e = e0;
-        std::int32_t exit_edge = -1;
-        for (std::size_t step = 0; step < tri.size(); ++step) {
-            const std::uint32_t v = vertex_of_edge(e);
-            if (walked.size() == first || walked.back() != v) walked.push_back(v);
-            const std::size_t incoming = prev_halfedge(e);  // (previous neighbour -> s)
-            if (twin[incoming] < 0) {
-                exit_edge = static_cast<std::int32_t>(incoming);
-                break;
+    // One step of the walk, precomputed in a sequential pass so that the walk itself
+    // touches one 8-byte entry per step: the half-edge after e counter-clockwise around
+    // its origin (the twin of e's predecessor in its triangle; -1 at the hull) and e's
+    // Voronoi vertex.
+    struct Step {
+        std::int32_t next;
+        std::uint32_t vertex;
+    };
+    std::vector<Step> steps(tri.size());
+    for (std::size_t e = 0; e < tri.size(); ++e)
+        steps[e] = {twin[prev_halfedge(e)], vertex_of_edge(e)};
+    // The walks of consecutive pieces of `order`, each into its own buffer.
+    const std::size_t pieces = std::min(parallel_pieces, std::max<std::size_t>(order.size() / 4096, 1));
+    std::vector<std::vector<std::uint32_t>> buffers(pieces);
+    std::vector<std::uint32_t> walked_at(n, 0), walked_size(n, 0), walked_in(n, 0);
+    parallel_for(pieces, threads_, [&](std::size_t j) {
+        std::vector<std::uint32_t>& walked = buffers[j];
+        const std::size_t begin = order.size() * j / pieces, end = order.size() * (j + 1) / pieces;
+        walked.reserve(7 * (end - begin));
+        for (std::size_t o = begin; o < end; ++o) {
+            const std::uint32_t s = order[o];
+            const std::size_t first = walked.size();
+            const std::uint32_t e0 = start[s];
+            std::uint32_t e = e0;
+            std::int32_t exit_edge = -1;
+            for (std::size_t step = 0; step < tri.size(); ++step) {
+                const Step here = steps[e];
+                if (walked.size() == first || walked.back() != here.vertex) walked.push_back(here.vertex);
+                if (here.next < 0) {  // e's predecessor (previous neighbour -> s) is a hull edge
+                    exit_edge = static_cast<std::int32_t>(prev_halfedge(e));
+                    break;
+                }
+                e = static_cast<std::uint32_t>(here.next);
+                if (e == e0) break;
             }
-            e = static_cast<std::uint32_t>(twin[incoming]);
-            if (e == e0) break;
+            if (exit_edge >= 0) {
+                d.unbounded[s] = 1;
+                d.entry_ray[s] = outward_normal(points_[s], points_[tri[next_halfedge(e0)]]);
+                d.exit_ray[s] = outward_normal(points_[tri[static_cast<std::size_t>(exit_edge)]], points_[s]);
+            } else if (walked.size() - first > 1 && walked.back() == walked[first]) {
+                walked.pop_back();  // the walk closed on the vertex it started in
+            }
+            walked_at[s] = static_cast<std::uint32_t>(first);
+            walked_size[s] = static_cast<std::uint32_t>(walked.size() - first);
+            walked_in[s] = static_cast<std::uint32_t>(j);
         }
-        if (exit_edge >= 0) {
-            d.unbounded[s] = 1;
-            d.entry_ray[s] = outward_normal(points_[s], points_[tri[next_halfedge(e0)]]);
-            d.exit_ray[s] = outward_normal(points_[tri[static_cast<std::size_t>(exit_edge)]], points_[s]);
-        } else if (walked.size() - first > 1 && walked.back() == walked[first]) {
-            walked.pop_back();  // the walk closed on the vertex it started in
-        }
-        walked_at[s] = static_cast<std::uint32_t>(first);
-        walked_size[s] = static_cast<std::uint32_t>(walked.size() - first);
-    }
+    });
     // Input order; a duplicate gets its twin's cell, and a site in no triangle (only an
     // inconsistent structure has one) an empty unbounded cell.
     d.cell_offsets.assign(n + 1, 0);
@@ -233,7 +271,8 @@ VoronoiDiagram VoronoiBuilder::finish(std::uint64_t tests) && {
     d.cell_vertices.resize(d.cell_offsets[n]);
     for (std::size_t i = 0; i < n; ++i) {
         const std::uint32_t s = t_.vertex_of_input[i];
-        std::copy_n(walked.begin() + walked_at[s], walked_size[s], d.cell_vertices.begin() + d.cell_offsets[i]);
+        std::copy_n(buffers[walked_in[s]].begin() + walked_at[s], walked_size[s],
+                    d.cell_vertices.begin() + d.cell_offsets[i]);
     }
     return d;
 }

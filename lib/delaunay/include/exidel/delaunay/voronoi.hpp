@@ -139,8 +139,9 @@ namespace detail {
 /// construction and finish().
 class VoronoiBuilder {
 public:
-    /// Computes every circumcentre; throws VoronoiError if one is not a finite point.
-    VoronoiBuilder(std::span<const Point2> points, const Triangulation& t);
+    /// Computes every circumcentre (on `threads` threads); throws VoronoiError if one is
+    /// not a finite point.
+    VoronoiBuilder(std::span<const Point2> points, const Triangulation& t, unsigned threads);
 
     /// Interior half-edges whose two triangles have bit-identical rounded centres (each
     /// pair once): the only ones that can share a circle.
@@ -158,6 +159,7 @@ private:
 
     std::span<const Point2> points_;
     const Triangulation& t_;
+    unsigned threads_;
     std::vector<Circumcenter> centres_;
     std::vector<std::uint32_t> candidates_;
     std::vector<std::uint32_t> parent_;  // union-find over triangles
@@ -173,10 +175,13 @@ VoronoiDiagram collinear_voronoi(std::span<const Point2> points, const Triangula
 /// triangulate() of the same points). Cocircular triangles are merged by
 /// kernel.incircle(...) == 0: exact with an exact kernel; with an inexact one the
 /// grouping is that kernel's opinion (the vertices are correctly rounded regardless).
+/// The circumcentres and the cells are computed on `threads` threads (the caller's
+/// included); the result does not depend on it.
 template <PredicateKernel K>
-VoronoiDiagram voronoi(std::span<const Point2> points, const Triangulation& t, const K& kernel) {
+VoronoiDiagram voronoi(std::span<const Point2> points, const Triangulation& t, const K& kernel,
+                       unsigned threads = 1) {
     if (t.collinear) return detail::collinear_voronoi(points, t);
-    detail::VoronoiBuilder builder(points, t);
+    detail::VoronoiBuilder builder(points, t, threads);
     std::uint64_t tests = 0;
     for (const std::uint32_t e : builder.candidates()) {
         Point2 q[4];
