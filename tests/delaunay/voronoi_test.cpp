@@ -443,5 +443,23 @@ TEST(VoronoiRegression, CentreJustAboveTheSubnormalRange) {
     }
 }
 
+TEST(Voronoi, ThreadCountDoesNotChangeTheDiagram) {
+    const auto points = uniform_points(30000, 11);
+    const auto r = delaunay::triangulate(points, AdaptiveKernel{});
+    ASSERT_TRUE(r.ok());
+    const VoronoiDiagram one = delaunay::voronoi(points, r.triangulation, AdaptiveKernel{}, 1);
+    const VoronoiDiagram two = delaunay::voronoi(points, r.triangulation, AdaptiveKernel{}, 2);
+    const VoronoiDiagram three = delaunay::voronoi(points, r.triangulation, AdaptiveKernel{}, 3);
+    for (const VoronoiDiagram* d : {&two, &three}) {
+        EXPECT_EQ(d->vertices, one.vertices);
+        EXPECT_EQ(d->sites, one.sites);
+        EXPECT_EQ(d->cell_vertices, one.cell_vertices);
+        EXPECT_EQ(d->cell_offsets, one.cell_offsets);
+        EXPECT_EQ(d->unbounded, one.unbounded);
+        EXPECT_EQ(d->exit_ray, one.exit_ray);
+        for (int k = 0; k < 3; ++k) EXPECT_EQ(d->stage_counts[k], one.stage_counts[k]);
+    }
+}
+
 }  // namespace
 }  // namespace exidel::test
