@@ -25,6 +25,9 @@ int predicate_command(std::span<const std::string_view> args);
 /// `exidel triangulate`: Delaunay triangulation of points read from a file or stdin.
 int triangulate_command(std::span<const std::string_view> args);
 
+/// `exidel voronoi`: Voronoi diagram of points read from a file or stdin.
+int voronoi_command(std::span<const std::string_view> args);
+
 /// `exidel certify`: the exact certifier on a point file and a triangulation file.
 int certify_command(std::span<const std::string_view> args);
 

@@ -30,6 +30,8 @@ constexpr std::array commands{
             &exidel::cli::predicate_command},
     Command{"triangulate", "Delaunay triangulation of points read from a file or stdin",
             &exidel::cli::triangulate_command},
+    Command{"voronoi", "Voronoi diagram (exact cocircular vertices) of points, json or svg",
+            &exidel::cli::voronoi_command},
     Command{"certify", "is a triangulation (json, .ele) the Delaunay triangulation of points?",
             &exidel::cli::certify_command},
     Command{"study", "failure maps, precision sweeps, triangulation outcomes, adaptive stages",

@@ -9,9 +9,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <charconv>
-#include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -25,6 +22,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "common.hpp"
 #include "exidel/delaunay/algorithms.hpp"
 #include "exidel/delaunay/certify.hpp"
 #include "exidel/delaunay/triangulate.hpp"
@@ -59,19 +57,10 @@ ones, so no point location is needed. Its order of insertion (--order):
 Every order gives a Delaunay triangulation with an exact kernel, and the same one when
 no four points are cocircular; the thread count never changes the output.
 
-Input (-i FILE or FILE, or standard input when no file or '-' is given). The format
-is --input-format, else the file's extension (.json json, .node node, .f64 f64),
-else xy:
-  xy    one point per line, "x y" or "x,y" (.txt .xy .csv); '#' starts a comment;
-        the first line may be a header of names ("x,y"), which is skipped; fields
-        may be quoted ("x","y"); a UTF-8 byte order mark is skipped. Wider CSV:
-        --columns X,Y picks the two fields by number (from 1) or header name
-  json  [[x, y], [x, y], ...]
-  node  Triangle's .node: "n 2 attributes markers", then "index x y [...]" lines
-        (0- or 1-based); attributes and markers are checked and ignored
-  f64   raw little-endian float64 pairs x0 y0 x1 y1 ...
-Text coordinates are decimal or C99 hex floats (0x1.8p-3; json: decimal only),
-rounded to the nearest double. NaN and infinity are errors; duplicates are kept
+)";
+
+constexpr std::string_view triangulate_help_tail =
+    R"(rounded to the nearest double. NaN and infinity are errors; duplicates are kept
 out of the triangulation and listed. An empty input is 0 points.
 
 Output (-o FILE, or standard output). The format is --format, else the extension of
@@ -143,12 +132,13 @@ Algorithms:
 )";
 
 std::string triangulate_help() {
-    return std::string(triangulate_help_head) + delaunay::algorithm_help() + "\nKernels:\n" +
+    return std::string(triangulate_help_head) + std::string(point_input_help) +
+           std::string(triangulate_help_tail) + delaunay::algorithm_help() + "\nKernels:\n" +
            kernel_help();
 }
 
 struct Options {
-    std::optional<std::string> input;
+    PointInput input;
     std::optional<std::string> output;
     std::string kernel = "adaptive";
     delaunay::InCirclePolicy incircle = delaunay::InCirclePolicy::determinant;
@@ -157,58 +147,13 @@ struct Options {
     unsigned threads = std::max(1u, std::thread::hardware_concurrency());
     std::size_t strip_points = 0;
     std::optional<io::TriangulationFormat> format;
-    std::optional<io::PointFormat> input_format;
-    std::optional<io::Columns> columns;
     bool certify = false;
     bool stats = false;
     bool quiet = false;
 };
 
-// Adds an option whose value `parse` turns into `target`; a value it rejects (returns
-// nothing for) is a usage error "--NAME takes EXPECTED, got 'VALUE'".
-template <class T, class Parse>
-void add_parsed(CLI::App& app, const std::string& names, const std::string& expected, T& target,
-                Parse parse) {
-    const std::string name = names.substr(names.rfind(',') + 1);
-    app.add_option_function<std::string>(names, [=, &target](const std::string& value) {
-        const auto parsed = parse(value);
-        if (!parsed) {
-            throw std::invalid_argument(name + " takes " + expected + ", got '" + value + "'");
-        }
-        target = static_cast<T>(*parsed);
-    });
-}
-
-// A whole number from 1 to `limit`.
-std::optional<std::size_t> whole_number(const std::string& text, std::size_t limit) {
-    std::size_t n = 0;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
-    if (ec != std::errc{} || end != text.data() + text.size() || n == 0 || n > limit) return {};
-    return n;
-}
-
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
 std::string_view policy_name(delaunay::InCirclePolicy p) {
     return p == delaunay::InCirclePolicy::cosine ? "cosine" : "determinant";
-}
-
-// What each failure means, completing the algorithm's message (which says where).
-std::string_view failure_meaning(delaunay::FailureKind kind) {
-    using delaunay::FailureKind;
-    switch (kind) {
-        case FailureKind::non_finite_input: return "a coordinate is NaN or infinite";
-        case FailureKind::too_many_points:
-            return "more points than 32-bit half-edge indices can address";
-        case FailureKind::unknown_algorithm: return "no such algorithm";
-        case FailureKind::result_inconsistent:
-            return "the finished triangulation does not close up";
-        default: return "the kernel's signs contradict each other";
-    }
 }
 
 bool takes_order(delaunay::Algorithm a) {
@@ -227,8 +172,6 @@ struct Times {
 void print_stats(std::ostream& err, std::size_t points, const delaunay::Result& r,
                  const std::string& kernel, const Options& o, const Times& times) {
     const delaunay::Triangulation& t = r.triangulation;
-    // Six decimals, as the hand-written writer printed them.
-    const auto ms = [](double v) { return std::round(v * 1e6) / 1e6; };
     nlohmann::ordered_json counters;
     r.counters.for_each([&](std::string_view name, std::uint64_t v) { counters[name] = v; });
     counters["flips"] = r.counters.flips();
@@ -259,24 +202,13 @@ void print_stats(std::ostream& err, std::size_t points, const delaunay::Result& 
         {"instrumentation", "counters"},
         {"counters", counters},
         {"failure", failure},
-        {"read_ms", ms(times.read)},
-        {"triangulate_ms", ms(times.triangulate)},
-        {"certify_ms", ms(times.certify)},
-        {"write_ms", ms(times.write)},
-        {"total_ms", ms(times.total)},
+        {"read_ms", stats_ms(times.read)},
+        {"triangulate_ms", stats_ms(times.triangulate)},
+        {"certify_ms", stats_ms(times.certify)},
+        {"write_ms", stats_ms(times.write)},
+        {"total_ms", stats_ms(times.total)},
     };
-    // The layout of the hand-written writer this replaced, which scripts may match:
-    // ", " and ": " between items, all on one line. dump(0) puts each item on its own
-    // line with ": " (a string's own newlines are escaped, so every '\n' is layout).
-    std::string line;
-    for (const char c : stats.dump(0)) {
-        if (c != '\n') {
-            line += c;
-        } else if (!line.empty() && line.back() == ',') {
-            line += ' ';
-        }
-    }
-    err << line << '\n';
+    err << stats_line(stats);
 }
 
 // Are `a` and `b` the same existing file?
@@ -284,15 +216,6 @@ bool same_file(const std::string& a, const std::string& b) {
     struct stat sa {}, sb {};
     return ::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0 && sa.st_dev == sb.st_dev &&
            sa.st_ino == sb.st_ino;
-}
-
-// Writes through `write(std::ostream&)` into `file`'s temporary; throws on I/O errors.
-template <class Write>
-void write_into(const PendingFile& file, Write write) {
-    std::ofstream out = file.open();
-    if (out) write(out);
-    out.close();
-    if (!out) throw std::runtime_error("error while writing '" + file.path() + "'");
 }
 
 // Prints the certifier's findings on `err`, one per line.
@@ -311,40 +234,22 @@ int run(const Options& o, const CommandLine& cli) {
     std::string error;
     const std::optional<AnyKernel> kernel = parse_kernel(o.kernel, error);
     if (!kernel) return cli.usage_error(error);
-    const bool from_stdin = !o.input || *o.input == "-";
+    const bool from_stdin = o.input.from_stdin();
     const bool to_stdout = !o.output || *o.output == "-";
-    const io::PointFormat input_format =
-        o.input_format ? *o.input_format
-                       : (from_stdin ? io::PointFormat::xy : io::point_format_from_path(*o.input));
-    if (o.columns && input_format != io::PointFormat::xy) {
-        return cli.usage_error("--columns applies to xy input, not to " +
-                               std::string(io::to_string(input_format)));
-    }
-    io::TriangulationFormat format = io::TriangulationFormat::json;
-    if (o.format) {
-        format = *o.format;
-    } else if (!to_stdout) {
-        const std::string& out = *o.output;
-        const std::size_t dot = out.rfind('.'), slash = out.rfind('/');
-        const bool has_extension = dot != std::string::npos && (slash == std::string::npos || dot > slash);
-        if (has_extension) {
-            const std::optional<io::TriangulationFormat> f = io::triangulation_format_from_path(out);
-            if (!f) {
-                return cli.usage_error("cannot tell the output format from '" + out +
-                                       "' (extensions: .json .ele .off .svg); give --format");
-            }
-            format = *f;
-        }
-    }
+    if (const std::optional<std::string> e = o.input.columns_error()) return cli.usage_error(*e);
+    const std::optional<io::TriangulationFormat> format =
+        output_format(o.format, o.output, io::TriangulationFormat::json,
+                      io::triangulation_format_from_path, ".json .ele .off .svg", error);
+    if (!format) return cli.usage_error(error);
 
     // The output files exist (as temporaries) from here on, removed again on any failure.
     std::optional<PendingFile> output, node_output;
     try {
         if (!to_stdout) output.emplace(*o.output);
-        if (!to_stdout && format == io::TriangulationFormat::ele) {
+        if (!to_stdout && *format == io::TriangulationFormat::ele) {
             const std::string& out = *o.output;
             const std::string node = (out.ends_with(".ele") ? out.substr(0, out.size() - 4) : out) + ".node";
-            if (from_stdin || !same_file(node, *o.input)) node_output.emplace(node);
+            if (from_stdin || !same_file(node, *o.input.path)) node_output.emplace(node);
         }
     } catch (const std::runtime_error& e) {
         std::cerr << "exidel: " << e.what() << '\n';
@@ -354,23 +259,10 @@ int run(const Options& o, const CommandLine& cli) {
     Times times;
 
     // Read.
-    progress.phase(from_stdin ? "reading standard input" : "reading '" + *o.input + "'");
     const Clock::time_point read_start = Clock::now();
-    io::PointFile input;
-    try {
-        const io::ReadOptions read_options{o.columns, o.threads};
-        if (from_stdin) {
-            input = io::read_point_file(std::cin, input_format, read_options);
-        } else {
-            const io::FileBytes bytes(*o.input);
-            input = io::parse_point_file(bytes.view(), input_format, read_options);
-        }
-    } catch (const std::runtime_error& e) {  // io::ReadError included
-        progress.stop();
-        std::cerr << "exidel: " << e.what() << '\n';
-        return exit_failure;
-    }
-    const std::vector<Point2>& points = input.points;
+    const std::optional<io::PointFile> input = o.input.read(o.threads, progress);
+    if (!input) return exit_failure;
+    const std::vector<Point2>& points = input->points;
     times.read = ms_since(read_start);
 
     // Triangulate: the only timed step. Counters only when asked for, so a plain run is
@@ -378,40 +270,20 @@ int run(const Options& o, const CommandLine& cli) {
     progress.phase("triangulating " + std::to_string(points.size()) + " points");
     delaunay::Options options{o.incircle, o.strategy, o.threads, o.strip_points};
     options.algorithm = o.algorithm;
-    delaunay::Result result;
-    std::string kernel_name;
-    bool exact_kernel = false;
-    std::visit(
-        [&](const auto& k) {
-            kernel_name = k.name();
-            exact_kernel = std::decay_t<decltype(k)>::is_exact;
-            const Clock::time_point start = Clock::now();
-            if (o.stats) {
-                result = delaunay::triangulate<delaunay::Instrumentation::counters>(
-                    std::span<const Point2>(points), k, options);
-            } else {
-                result = delaunay::triangulate<delaunay::Instrumentation::off>(
-                    std::span<const Point2>(points), k, options);
-            }
-            times.triangulate = ms_since(start);
-        },
-        *kernel);
+    const Triangulated triangulated = triangulate_points(*kernel, points, options, o.stats);
+    const delaunay::Result& result = triangulated.result;
+    times.triangulate = triangulated.ms;
     const auto finish = [&](int status) {
         progress.stop();
         times.total = ms_since(run_start);
-        if (o.stats) print_stats(std::cerr, points.size(), result, kernel_name, o, times);
+        if (o.stats) {
+            print_stats(std::cerr, points.size(), result, triangulated.kernel_name, o, times);
+        }
         return status;
     };
     if (!result.ok()) {
         progress.stop();
-        const delaunay::Failure& f = *result.failure;
-        std::cerr << "exidel: triangulation failed: " << f.message << ": "
-                  << failure_meaning(f.kind) << " (" << delaunay::to_string(f.kind) << ").";
-        if (!exact_kernel) {
-            std::cerr << " The " << kernel_name << " kernel is not exact; an exact kernel "
-                      << "(adaptive, the default) triangulates every finite input.";
-        }
-        std::cerr << '\n';
+        print_triangulation_failure(std::cerr, triangulated);
         return finish(exit_failure);
     }
     const delaunay::Triangulation& tri = result.triangulation;
@@ -433,30 +305,25 @@ int run(const Options& o, const CommandLine& cli) {
     // Write.
     progress.phase("writing");
     const Clock::time_point write_start = Clock::now();
-    const io::WriteOptions write_options{input.index_base, o.threads};
+    const io::WriteOptions write_options{input->index_base, o.threads};
     const auto write = [&](std::ostream& out) {
-        io::write_triangulation(out, points, tri, format, write_options);
+        io::write_triangulation(out, points, tri, *format, write_options);
     };
-    try {
+    const bool ok = written(progress, [&] {
         if (!output) {
-            write(std::cout);
-            std::cout.flush();
-            if (!std::cout) throw std::runtime_error("error while writing the output");
+            write_stdout(write);
         } else {
             write_into(*output, write);
             if (node_output) {
                 write_into(*node_output, [&](std::ostream& out) {
-                    io::write_points(out, points, io::PointFormat::node, input.index_base);
+                    io::write_points(out, points, io::PointFormat::node, input->index_base);
                 });
             }
             output->commit();
             if (node_output) node_output->commit();
         }
-    } catch (const std::runtime_error& e) {
-        progress.stop();
-        std::cerr << "exidel: " << e.what() << '\n';
-        return finish(exit_failure);
-    }
+    });
+    if (!ok) return finish(exit_failure);
     times.write = ms_since(write_start);
     progress.stop();
     if (!o.quiet && tri.collinear) {
@@ -479,19 +346,10 @@ int triangulate_command(std::span<const std::string_view> args) {
     CommandLine cli("triangulate", triangulate_help());
     CLI::App& app = cli.app;
     Options o;
-    std::vector<std::string> files;  // the positional FILE, counted with -i
-    const CLI::Option* input = app.add_option("-i,--input", o.input);
-    app.add_option("FILE", files);
+    o.input.add_file_options(app);
     const CLI::Option* output = app.add_option("-o,--output", o.output);
     app.add_option("-k,--kernel", o.kernel);
-    app.add_option_function<std::string>("-a,--algorithm", [&](const std::string& name) {
-        const std::optional<delaunay::Algorithm> a = delaunay::algorithm_from_name(name);
-        if (!a) {
-            throw std::invalid_argument("unknown algorithm '" + name + "' (expected " +
-                                        delaunay::algorithm_spellings() + ")");
-        }
-        o.algorithm = *a;
-    });
+    add_algorithm_option(app, o.algorithm);
     add_parsed(app, "--incircle", "determinant or cosine", o.incircle,
                [](const std::string& v) -> std::optional<InCirclePolicy> {
                    if (v == "determinant") return InCirclePolicy::determinant;
@@ -515,22 +373,13 @@ int triangulate_command(std::span<const std::string_view> args) {
                [](const std::string& v) { return whole_number(v, delaunay::detail::max_points); });
     add_parsed(app, "-f,--format", "json, ele, off or svg", o.format,
                io::triangulation_format_from_name);
-    add_parsed(app, "--input-format", "xy, json, node or f64", o.input_format,
-               io::point_format_from_name);
-    app.add_option_function<std::string>("--columns", [&](const std::string& spec) {
-        std::string error;
-        o.columns = io::parse_columns(spec, error);
-        if (!o.columns) throw std::invalid_argument("--columns: " + error);
-    });
+    o.input.add_format_options(app);
     app.add_flag("--certify", o.certify);
     app.add_flag("--stats", o.stats);
     app.add_flag("-q,--quiet", o.quiet);
     if (const std::optional<int> status = cli.parse(args)) return *status;
-    if (input->count() + files.size() > 1) {
-        return cli.usage_error("more than one input file given");
-    }
+    if (const std::optional<std::string> e = o.input.take_files()) return cli.usage_error(*e);
     if (output->count() > 1) return cli.usage_error("more than one output file given");
-    if (!files.empty()) o.input = files.front();
     return run(o, cli);
 }
 

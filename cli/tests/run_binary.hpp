@@ -2,12 +2,14 @@
 // directory (EXIDEL_CLI_TEST_DIR) and one run of the binary (EXIDEL_CLI_PATH).
 #pragma once
 
+#include <dirent.h>
 #include <sys/wait.h>
 
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace exidel::cli_test {
 
@@ -24,6 +26,8 @@ inline std::string slurp(const std::string& path) {
     return ss.str();
 }
 
+inline bool exists(const std::string& path) { return std::ifstream(path).good(); }
+
 inline std::string work_path(const std::string& name) {
     return std::string(EXIDEL_CLI_TEST_DIR) + "/" + name;
 }
@@ -32,6 +36,19 @@ inline std::string write_file(const std::string& name, const std::string& conten
     const std::string path = work_path(name);
     std::ofstream(path, std::ios::binary) << content;
     return path;
+}
+
+/// Files in the work directory whose name contains `part` (leftover temporaries).
+inline std::vector<std::string> files_containing(const std::string& part) {
+    std::vector<std::string> found;
+    DIR* d = opendir(EXIDEL_CLI_TEST_DIR);
+    if (!d) return found;
+    while (const dirent* e = readdir(d)) {
+        const std::string name = e->d_name;
+        if (name.find(part) != std::string::npos) found.push_back(name);
+    }
+    closedir(d);
+    return found;
 }
 
 /// Runs `exidel ARGS` (already shell-quoted where needed) with stdin from `input`. Each

@@ -33,8 +33,6 @@ namespace io = exidel::io;
 
 using namespace exidel::cli_test;
 
-bool exists(const std::string& path) { return std::ifstream(path).good(); }
-
 std::string points_file(const std::string& name, const std::vector<Point2>& pts,
                         io::PointFormat f) {
     std::ostringstream s;
@@ -45,19 +43,6 @@ std::string points_file(const std::string& name, const std::vector<Point2>& pts,
 // Runs `exidel triangulate ARGS` with stdin from `input`.
 RunResult run(const std::string& args, const std::string& input = "") {
     return run_exidel("tri", "triangulate " + args, input);
-}
-
-// Files in the work directory whose name contains `part` (leftover temporaries).
-std::vector<std::string> files_containing(const std::string& part) {
-    std::vector<std::string> found;
-    DIR* d = opendir(EXIDEL_CLI_TEST_DIR);
-    if (!d) return found;
-    while (const dirent* e = readdir(d)) {
-        const std::string name = e->d_name;
-        if (name.find(part) != std::string::npos) found.push_back(name);
-    }
-    closedir(d);
-    return found;
 }
 
 // 100 points: random doubles, a cocircular lattice, and two exact duplicates. Includes

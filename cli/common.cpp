@@ -1,0 +1,158 @@
+// exidel CLI (internal): what exidel triangulate and exidel voronoi share (common.hpp).
+#include "common.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <system_error>
+#include <type_traits>
+#include <variant>
+
+namespace exidel::cli {
+
+const std::string_view point_input_help =
+    R"(Input (-i FILE or FILE, or standard input when no file or '-' is given). The format
+is --input-format, else the file's extension (.json json, .node node, .f64 f64),
+else xy:
+  xy    one point per line, "x y" or "x,y" (.txt .xy .csv); '#' starts a comment;
+        the first line may be a header of names ("x,y"), which is skipped; fields
+        may be quoted ("x","y"); a UTF-8 byte order mark is skipped. Wider CSV:
+        --columns X,Y picks the two fields by number (from 1) or header name
+  json  [[x, y], [x, y], ...]
+  node  Triangle's .node: "n 2 attributes markers", then "index x y [...]" lines
+        (0- or 1-based); attributes and markers are checked and ignored
+  f64   raw little-endian float64 pairs x0 y0 x1 y1 ...
+Text coordinates are decimal or C99 hex floats (0x1.8p-3; json: decimal only),
+)";
+
+void add_algorithm_option(CLI::App& app, delaunay::Algorithm& target) {
+    app.add_option_function<std::string>("-a,--algorithm", [&target](const std::string& name) {
+        const std::optional<delaunay::Algorithm> a = delaunay::algorithm_from_name(name);
+        if (!a) {
+            throw std::invalid_argument("unknown algorithm '" + name + "' (expected " +
+                                        delaunay::algorithm_spellings() + ")");
+        }
+        target = *a;
+    });
+}
+
+std::optional<std::size_t> whole_number(const std::string& text, std::size_t limit) {
+    std::size_t n = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
+    if (ec != std::errc{} || end != text.data() + text.size() || n == 0 || n > limit) return {};
+    return n;
+}
+
+double ms_since(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+void PointInput::add_file_options(CLI::App& app) {
+    input_option_ = app.add_option("-i,--input", path);
+    app.add_option("FILE", files_);
+}
+
+void PointInput::add_format_options(CLI::App& app) {
+    add_parsed(app, "--input-format", "xy, json, node or f64", format, io::point_format_from_name);
+    app.add_option_function<std::string>("--columns", [this](const std::string& spec) {
+        std::string error;
+        columns = io::parse_columns(spec, error);
+        if (!columns) throw std::invalid_argument("--columns: " + error);
+    });
+}
+
+std::optional<std::string> PointInput::take_files() {
+    if (input_option_->count() + files_.size() > 1) return "more than one input file given";
+    if (!files_.empty()) path = files_.front();
+    return std::nullopt;
+}
+
+io::PointFormat PointInput::resolved_format() const {
+    if (format) return *format;
+    return from_stdin() ? io::PointFormat::xy : io::point_format_from_path(*path);
+}
+
+std::optional<std::string> PointInput::columns_error() const {
+    const io::PointFormat f = resolved_format();
+    if (!columns || f == io::PointFormat::xy) return std::nullopt;
+    return "--columns applies to xy input, not to " + std::string(io::to_string(f));
+}
+
+std::optional<io::PointFile> PointInput::read(unsigned threads, Progress& progress) const {
+    progress.phase(from_stdin() ? "reading standard input" : "reading '" + *path + "'");
+    try {
+        const io::ReadOptions options{columns, threads};
+        if (from_stdin()) return io::read_point_file(std::cin, resolved_format(), options);
+        const io::FileBytes bytes(*path);
+        return io::parse_point_file(bytes.view(), resolved_format(), options);
+    } catch (const std::runtime_error& e) {  // io::ReadError included
+        progress.stop();
+        std::cerr << "exidel: " << e.what() << '\n';
+        return std::nullopt;
+    }
+}
+
+Triangulated triangulate_points(const AnyKernel& kernel, std::span<const Point2> points,
+                                const delaunay::Options& options, bool counters) {
+    Triangulated t;
+    std::visit(
+        [&](const auto& k) {
+            t.kernel_name = k.name();
+            t.exact_kernel = std::decay_t<decltype(k)>::is_exact;
+            const Clock::time_point start = Clock::now();
+            if (counters) {
+                t.result = delaunay::triangulate<delaunay::Instrumentation::counters>(points, k, options);
+            } else {
+                t.result = delaunay::triangulate<delaunay::Instrumentation::off>(points, k, options);
+            }
+            t.ms = ms_since(start);
+        },
+        kernel);
+    return t;
+}
+
+namespace {
+
+// What each failure means, completing the algorithm's message (which says where).
+std::string_view failure_meaning(delaunay::FailureKind kind) {
+    using delaunay::FailureKind;
+    switch (kind) {
+        case FailureKind::non_finite_input: return "a coordinate is NaN or infinite";
+        case FailureKind::too_many_points:
+            return "more points than 32-bit half-edge indices can address";
+        case FailureKind::unknown_algorithm: return "no such algorithm";
+        case FailureKind::result_inconsistent:
+            return "the finished triangulation does not close up";
+        default: return "the kernel's signs contradict each other";
+    }
+}
+
+}  // namespace
+
+void print_triangulation_failure(std::ostream& err, const Triangulated& t) {
+    const delaunay::Failure& f = *t.result.failure;
+    err << "exidel: triangulation failed: " << f.message << ": " << failure_meaning(f.kind) << " ("
+        << delaunay::to_string(f.kind) << ").";
+    if (!t.exact_kernel) {
+        err << " The " << t.kernel_name << " kernel is not exact; an exact kernel "
+            << "(adaptive, the default) triangulates every finite input.";
+    }
+    err << '\n';
+}
+
+double stats_ms(double ms) { return std::round(ms * 1e6) / 1e6; }
+
+std::string stats_line(const nlohmann::ordered_json& stats) {
+    // dump(0) puts each item on its own line with ": " (a string's own newlines are
+    // escaped, so every '\n' is layout).
+    std::string line;
+    for (const char c : stats.dump(0)) {
+        if (c != '\n') {
+            line += c;
+        } else if (!line.empty() && line.back() == ',') {
+            line += ' ';
+        }
+    }
+    return line + '\n';
+}
+
+}  // namespace exidel::cli
