@@ -163,7 +163,20 @@ VoronoiDiagram VoronoiBuilder::finish(std::uint64_t tests) && {
     std::vector<std::uint32_t> ring;
     d.sites.reserve(3 * d.vertices.size() + t_.duplicates.size());
     d.site_offsets.reserve(d.vertices.size() + 1);
-    for (std::size_t v = 0; v < d.vertices.size(); ++v) {
+    const bool corners_only = merges_ == 0 && t_.duplicates.empty();
+    if (corners_only) {
+        // Every vertex is one triangle and no site repeats: its three corners, from the
+        // smallest (a rotation of a counter-clockwise triangle stays counter-clockwise).
+        d.sites.resize(3 * d.vertices.size());
+        d.site_offsets.resize(d.vertices.size() + 1);
+        for (std::size_t v = 0; v < d.vertices.size(); ++v) {
+            const std::uint32_t* c = &tri[3 * first_triangle[v]];
+            const int k = c[0] < c[1] ? (c[0] < c[2] ? 0 : 2) : (c[1] < c[2] ? 1 : 2);
+            for (int j = 0; j < 3; ++j) d.sites[3 * v + j] = c[(k + j) % 3];
+            d.site_offsets[v + 1] = static_cast<std::uint32_t>(3 * v + 3);
+        }
+    }
+    for (std::size_t v = 0; !corners_only && v < d.vertices.size(); ++v) {
         ring.clear();
         if (group_size[v] == 1) {
             const std::uint32_t* c = &tri[3 * first_triangle[v]];
@@ -195,17 +208,18 @@ VoronoiDiagram VoronoiBuilder::finish(std::uint64_t tests) && {
     // walked in the order they first appear in the triangle array, not in input order:
     // neighbouring sites then touch neighbouring triangles (the walk's memory accesses
     // stay in cache), and the cells are put in input order afterwards.
-    constexpr std::uint32_t none = 0xffffffffu;
-    std::vector<std::uint32_t> start(n, none), order;
+    // Each site with the first half-edge leaving it, in triangle order. (A byte per site
+    // to mark it seen: the scan's random accesses stay in cache.)
+    struct Start {
+        std::uint32_t site, edge;
+    };
+    std::vector<std::uint8_t> seen(n, 0);
+    std::vector<Start> order;
     order.reserve(n);
     for (std::size_t e = 0; e < tri.size(); ++e) {
-        std::uint32_t& first = start[tri[e]];
-        if (first == none) {
-            order.push_back(tri[e]);
-            first = static_cast<std::uint32_t>(e);
-        } else if (twin[e] < 0) {
-            first = static_cast<std::uint32_t>(e);  // a hull edge: the walk starts there
-        }
+        if (seen[tri[e]]) continue;
+        seen[tri[e]] = 1;
+        order.push_back({tri[e], static_cast<std::uint32_t>(e)});
     }
     d.unbounded.assign(n, 0);
     d.entry_ray.assign(n, Point2{0, 0});
@@ -222,28 +236,41 @@ VoronoiDiagram VoronoiBuilder::finish(std::uint64_t tests) && {
     for (std::size_t e = 0; e < tri.size(); ++e)
         steps[e] = {twin[prev_halfedge(e)], vertex_of_edge(e)};
     // The walks of consecutive pieces of `order`, each into its own buffer.
+    struct Walked {
+        std::uint32_t at, size, piece;
+    };
     const std::size_t pieces = std::min(parallel_pieces, std::max<std::size_t>(order.size() / 4096, 1));
     std::vector<std::vector<std::uint32_t>> buffers(pieces);
-    std::vector<std::uint32_t> walked_at(n, 0), walked_size(n, 0), walked_in(n, 0);
+    std::vector<Walked> walked_cell(n, Walked{0, 0, 0});
     parallel_for(pieces, threads_, [&](std::size_t j) {
         std::vector<std::uint32_t>& walked = buffers[j];
         const std::size_t begin = order.size() * j / pieces, end = order.size() * (j + 1) / pieces;
         walked.reserve(7 * (end - begin));
         for (std::size_t o = begin; o < end; ++o) {
-            const std::uint32_t s = order[o];
+            const std::uint32_t s = order[o].site;
             const std::size_t first = walked.size();
-            const std::uint32_t e0 = start[s];
-            std::uint32_t e = e0;
+            std::uint32_t e0 = order[o].edge;
             std::int32_t exit_edge = -1;
-            for (std::size_t step = 0; step < tri.size(); ++step) {
-                const Step here = steps[e];
-                if (walked.size() == first || walked.back() != here.vertex) walked.push_back(here.vertex);
-                if (here.next < 0) {  // e's predecessor (previous neighbour -> s) is a hull edge
-                    exit_edge = static_cast<std::int32_t>(prev_halfedge(e));
-                    break;
+            for (int attempt = 0; attempt < 2; ++attempt) {
+                std::uint32_t e = e0;
+                for (std::size_t step = 0; step < tri.size(); ++step) {
+                    const Step here = steps[e];
+                    if (walked.size() == first || walked.back() != here.vertex) walked.push_back(here.vertex);
+                    if (here.next < 0) {  // e's predecessor (previous neighbour -> s) is on the hull
+                        exit_edge = static_cast<std::int32_t>(prev_halfedge(e));
+                        break;
+                    }
+                    e = static_cast<std::uint32_t>(here.next);
+                    if (e == e0) break;
                 }
-                e = static_cast<std::uint32_t>(here.next);
-                if (e == e0) break;
+                if (exit_edge < 0 || attempt == 1 || twin[e0] < 0) break;
+                // A hull site, entered mid-fan: turn clockwise to its hull edge (the twin
+                // of a half-edge leaving s ends at s; the next one leaves s again) and
+                // walk once more from there. Only hull sites pay this.
+                for (std::size_t step = 0; step < tri.size() && twin[e0] >= 0; ++step)
+                    e0 = static_cast<std::uint32_t>(next_halfedge(static_cast<std::size_t>(twin[e0])));
+                walked.resize(first);
+                exit_edge = -1;
             }
             if (exit_edge >= 0) {
                 d.unbounded[s] = 1;
@@ -252,9 +279,8 @@ VoronoiDiagram VoronoiBuilder::finish(std::uint64_t tests) && {
             } else if (walked.size() - first > 1 && walked.back() == walked[first]) {
                 walked.pop_back();  // the walk closed on the vertex it started in
             }
-            walked_at[s] = static_cast<std::uint32_t>(first);
-            walked_size[s] = static_cast<std::uint32_t>(walked.size() - first);
-            walked_in[s] = static_cast<std::uint32_t>(j);
+            walked_cell[s] = {static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(walked.size() - first),
+                              static_cast<std::uint32_t>(j)};
         }
     });
     // Input order; a duplicate gets its twin's cell, and a site in no triangle (only an
@@ -262,8 +288,8 @@ VoronoiDiagram VoronoiBuilder::finish(std::uint64_t tests) && {
     d.cell_offsets.assign(n + 1, 0);
     for (std::size_t i = 0; i < n; ++i) {
         const std::uint32_t s = t_.vertex_of_input[i];
-        if (start[s] == none) d.unbounded[s] = 1;
-        d.cell_offsets[i + 1] = d.cell_offsets[i] + walked_size[s];
+        if (!seen[s]) d.unbounded[s] = 1;
+        d.cell_offsets[i + 1] = d.cell_offsets[i] + walked_cell[s].size;
         d.unbounded[i] = d.unbounded[s];
         d.entry_ray[i] = d.entry_ray[s];
         d.exit_ray[i] = d.exit_ray[s];
@@ -271,8 +297,8 @@ VoronoiDiagram VoronoiBuilder::finish(std::uint64_t tests) && {
     d.cell_vertices.resize(d.cell_offsets[n]);
     for (std::size_t i = 0; i < n; ++i) {
         const std::uint32_t s = t_.vertex_of_input[i];
-        std::copy_n(buffers[walked_in[s]].begin() + walked_at[s], walked_size[s],
-                    d.cell_vertices.begin() + d.cell_offsets[i]);
+        const Walked w = walked_cell[s];
+        std::copy_n(buffers[w.piece].begin() + w.at, w.size, d.cell_vertices.begin() + d.cell_offsets[i]);
     }
     return d;
 }
