@@ -1,10 +1,10 @@
 // exidel bench: the Voronoi diagram against the triangulation it is built from and against
 // CGAL computing the duals with Epick, in one process (issue 12's goal).
 //
-//   exidel-bench-voronoi [--n N] [--reps R] [--input uniform|grid|circles]
+//   exidel-bench-voronoi [--n N] [--reps R] [--input uniform|grid] [--threads T]
 //
-// Per repetition, interleaved: exidel's default triangulation (adaptive kernel, one
-// thread), then exidel's Voronoi diagram of it (correctly rounded vertices, exact
+// Per repetition, interleaved: exidel's default triangulation (adaptive kernel, T threads,
+// default 1), then exidel's Voronoi diagram of it (T threads) (correctly rounded vertices, exact
 // cocircular merging); CGAL's Delaunay_triangulation_2<Epick> range insertion, then
 // dt.dual(f) (Epick's circumcentre in doubles, nothing merged) for every finite face, and
 // CGAL's Voronoi_diagram_2 adaptor with its exact degeneracy removal walking every vertex.
@@ -69,13 +69,15 @@ int main(int argc, char** argv) {
     std::size_t n = 1000000;
     int reps = 5;
     std::string input = "uniform";
+    unsigned threads = 1;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string a = argv[i];
         if (a == "--n") n = std::strtoull(argv[i + 1], nullptr, 10);
         else if (a == "--reps") reps = std::atoi(argv[i + 1]);
         else if (a == "--input") input = argv[i + 1];
+        else if (a == "--threads") threads = static_cast<unsigned>(std::atoi(argv[i + 1]));
         else {
-            std::fprintf(stderr, "usage: %s [--n N] [--reps R] [--input uniform|grid]\n", argv[0]);
+            std::fprintf(stderr, "usage: %s [--n N] [--reps R] [--input uniform|grid] [--threads T]\n", argv[0]);
             return 2;
         }
     }
@@ -85,14 +87,14 @@ int main(int argc, char** argv) {
     std::size_t vertices = 0, triangles = 0, cgal_vd_vertices = 0;
     std::uint64_t tests = 0, merges = 0;
     delaunay::Options options;
-    options.threads = 1;
+    options.threads = threads;
     for (int r = 0; r < reps; ++r) {
         {
             const auto t0 = Clock::now();
             const delaunay::Result res = delaunay::triangulate(points, AdaptiveKernel{}, options);
             const auto t1 = Clock::now();
             if (!res.ok()) return 1;
-            const delaunay::VoronoiDiagram d = delaunay::voronoi(points, res.triangulation, AdaptiveKernel{});
+            const delaunay::VoronoiDiagram d = delaunay::voronoi(points, res.triangulation, AdaptiveKernel{}, threads);
             const auto t2 = Clock::now();
             tri_ms.push_back(ms(t0, t1));
             vor_ms.push_back(ms(t1, t2));
@@ -135,7 +137,8 @@ int main(int argc, char** argv) {
     const double tri = median(tri_ms), vor = median(vor_ms);
     const double ctri = median(cgal_tri_ms), cdual = median(cgal_dual_ms), cvd = median(cgal_vd_ms);
     const double total_stages = double(stages[0] + stages[1] + stages[2]);
-    std::printf("input %s, n = %zu, medians of %d runs (ms)\n", input.c_str(), n, reps);
+    std::printf("input %s, n = %zu, exidel on %u thread(s), medians of %d runs (ms)\n", input.c_str(), n,
+                threads, reps);
     std::printf("exidel triangulate          %9.1f   (%zu triangles)\n", tri, triangles);
     std::printf("exidel voronoi step         %9.1f   (%zu vertices; %llu cocircular tests, %llu merges)\n",
                 vor, vertices, static_cast<unsigned long long>(tests), static_cast<unsigned long long>(merges));

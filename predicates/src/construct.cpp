@@ -16,6 +16,7 @@
 #include <optional>
 
 #include "binary64.hpp"
+#include "construct_dispatch.hpp"
 #include "exidel/predicates/constants.hpp"
 #include "fp_hygiene.hpp"
 
@@ -84,21 +85,23 @@ Word fast_two_sum(double a, double b) noexcept {
     return {s, b - (s - a)};
 }
 
-/// a * b exactly (no under- or overflow). With a hardware fused multiply-add the error
-/// term is one instruction; without one (the x86-64 baseline) std::fma is a library call
-/// costing more than Dekker's split, which is exact here because exidel's translation
-/// units are compiled with -ffp-contract=off.
-Word two_product(double a, double b) noexcept {
+/// a * b exactly (no under- or overflow). With a fused multiply-add the error term is one
+/// instruction (Fma); without one, Dekker's split, exact because exidel's translation
+/// units are compiled with -ffp-contract=off. (On the x86-64 baseline std::fma is a
+/// library call costing more than the split, so the FMA version is compiled separately
+/// for processors that have one: double_word() below.)
+template <bool Fma>
+[[gnu::always_inline]] inline Word two_product(double a, double b) noexcept {
     const double p = a * b;
-#if defined(__FMA__) || defined(__ARM_FEATURE_FMA)
-    return {p, std::fma(a, b, -p)};
-#else
-    constexpr double splitter = 134217729.0;  // 2^27 + 1
-    const double ca = splitter * a, cb = splitter * b;
-    const double ah = ca - (ca - a), bh = cb - (cb - b);
-    const double al = a - ah, bl = b - bh;
-    return {p, ((ah * bh - p) + ah * bl + al * bh) + al * bl};
-#endif
+    if constexpr (Fma) {
+        return {p, __builtin_fma(a, b, -p)};
+    } else {
+        constexpr double splitter = 134217729.0;  // 2^27 + 1
+        const double ca = splitter * a, cb = splitter * b;
+        const double ah = ca - (ca - a), bh = cb - (cb - b);
+        const double al = a - ah, bl = b - bh;
+        return {p, ((ah * bh - p) + ah * bl + al * bh) + al * bl};
+    }
 }
 
 Word add(Word x, Word y) noexcept {
@@ -109,8 +112,9 @@ Word add(Word x, Word y) noexcept {
 
 Word neg(Word x) noexcept { return {-x.hi, -x.lo}; }
 
-Word mul(Word x, Word y) noexcept {
-    const Word p = two_product(x.hi, y.hi);
+template <bool Fma>
+[[gnu::always_inline]] inline Word mul(Word x, Word y) noexcept {
+    const Word p = two_product<Fma>(x.hi, y.hi);
     const double c = x.hi * y.lo + x.lo * y.hi;
     return fast_two_sum(p.hi, p.lo + c);
 }
@@ -215,11 +219,13 @@ struct Frame {
 };
 
 /// base + N / (2 D), if stage 2 certifies the nearest double (bounds.md#circumcenter).
-std::optional<double> coordinate(double base, Word n, double tn, const Frame& f) noexcept {
+template <bool Fma>
+[[gnu::always_inline]] inline std::optional<double> coordinate(double base, Word n, double tn,
+                                                               const Frame& f) noexcept {
     // Propose: x ~ base + q1 + q2, q1 the quotient of the high parts, q2 its correction.
     const double two_d = 2.0 * f.d.hi;
     const double q1 = n.hi / two_d;
-    const Word r = add(n, neg(mul({two_d, 2.0 * f.d.lo}, {q1, 0.0})));
+    const Word r = add(n, neg(mul<Fma>({two_d, 2.0 * f.d.lo}, {q1, 0.0})));
     const double q2 = r.hi / two_d;
     const Word bq = two_sum(base, q1);
     const double s = bq.hi + (bq.lo + q2);
@@ -228,7 +234,7 @@ std::optional<double> coordinate(double base, Word n, double tn, const Frame& f)
     // Verify: F = N + 2 D w with w = base - s exactly.
     const Word w = two_sum(base, -s);
     if (w.hi != 0.0 && !(std::fabs(w.hi) >= lo)) return std::nullopt;
-    const Word fw = add(n, mul({two_d, 2.0 * f.d.lo}, w));
+    const Word fw = add(n, mul<Fma>({two_d, 2.0 * f.d.lo}, w));
     const double f_error = bounds::circumcenter_rel * (tn + 2.0 * f.td * std::fabs(w.hi));
     const double h = half_gap(s);
     const double lhs = (std::fabs(fw.hi) + f_error) * (1.0 + bounds::circumcenter_margin);
@@ -238,24 +244,62 @@ std::optional<double> coordinate(double base, Word n, double tn, const Frame& f)
     return s;
 }
 
-std::optional<Point2> double_word_stage(const Differences& t) noexcept {
+template <bool Fma>
+[[gnu::always_inline]] inline std::optional<Point2> double_word_stage(const Differences& t) noexcept {
     const Word bx = t.bx, by = t.by, cx = t.cx, cy = t.cy;
     Frame f;
-    f.d = add(mul(bx, cy), neg(mul(by, cx)));
+    f.d = add(mul<Fma>(bx, cy), neg(mul<Fma>(by, cx)));
     f.td = std::fabs(bx.hi * cy.hi) + std::fabs(by.hi * cx.hi);
     f.d_error = bounds::circumcenter_rel * f.td;
     if (!(std::fabs(f.d.hi) > 2.0 * f.d_error)) return std::nullopt;  // near-collinear
-    const Word bb = add(mul(bx, bx), mul(by, by)), cc = add(mul(cx, cx), mul(cy, cy));
-    f.nx = add(mul(cy, bb), neg(mul(by, cc)));
-    f.ny = add(mul(bx, cc), neg(mul(cx, bb)));
+    const Word bb = add(mul<Fma>(bx, bx), mul<Fma>(by, by)), cc = add(mul<Fma>(cx, cx), mul<Fma>(cy, cy));
+    f.nx = add(mul<Fma>(cy, bb), neg(mul<Fma>(by, cc)));
+    f.ny = add(mul<Fma>(bx, cc), neg(mul<Fma>(cx, bb)));
     f.tnx = std::fabs(cy.hi) * bb.hi + std::fabs(by.hi) * cc.hi;
     f.tny = std::fabs(bx.hi) * cc.hi + std::fabs(cx.hi) * bb.hi;
 
-    const std::optional<double> x = coordinate(t.a.x, f.nx, f.tnx, f);
+    const std::optional<double> x = coordinate<Fma>(t.a.x, f.nx, f.tnx, f);
     if (!x) return std::nullopt;
-    const std::optional<double> y = coordinate(t.a.y, f.ny, f.tny, f);
+    const std::optional<double> y = coordinate<Fma>(t.a.y, f.ny, f.tny, f);
     if (!y) return std::nullopt;
     return Point2{*x, *y};
+}
+
+
+#if (defined(__x86_64__) || defined(__i386__)) && defined(__GNUC__) && !defined(__FMA__)
+[[gnu::target("fma")]] std::optional<Point2> double_word_stage_fma(const Differences& t) noexcept {
+    return double_word_stage<true>(t);
+}
+#endif
+
+}  // namespace
+
+namespace detail {
+bool& circumcenter_use_fma() noexcept {
+#if defined(__FMA__) || defined(__ARM_FEATURE_FMA)
+    static bool use = true;
+#elif (defined(__x86_64__) || defined(__i386__)) && defined(__GNUC__)
+    static bool use = (__builtin_cpu_init(), __builtin_cpu_supports("fma") != 0);
+#else
+    static bool use = false;
+#endif
+    return use;
+}
+}  // namespace detail
+
+namespace {
+
+/// Stage 2 with the processor's fused multiply-add when it has one (the result is the
+/// same: both Two-Products are exact).
+std::optional<Point2> double_word(const Differences& t) noexcept {
+#if defined(__FMA__) || defined(__ARM_FEATURE_FMA)
+    return double_word_stage<true>(t);
+#else
+#if (defined(__x86_64__) || defined(__i386__)) && defined(__GNUC__)
+    if (detail::circumcenter_use_fma()) return double_word_stage_fma(t);
+#endif
+    return double_word_stage<false>(t);
+#endif
 }
 
 // ---- stage 3: exact integers ----------------------------------------------------------------
@@ -383,7 +427,7 @@ inline Circumcenter decide(Point2 a, Point2 b, Point2 c) noexcept {
     if (const std::optional<Differences> t = differences(a, b, c)) {
         if (const std::optional<Point2> p = float_stage(*t))
             return {*p, CircumcenterStatus::ok, CircumcenterStage::floating};
-        if (const std::optional<Point2> p = double_word_stage(*t))
+        if (const std::optional<Point2> p = double_word(*t))
             return {*p, CircumcenterStatus::ok, CircumcenterStage::double_word};
     }
     return circumcenter_exact(a, b, c);
