@@ -23,6 +23,27 @@
 
 namespace exidel::delaunay {
 
+/// The arrays of both forms of the diagram (VoronoiDiagram, ClippedVoronoi): vertices,
+/// the sites of each vertex and the vertices of each cell as offsets into flat arrays.
+struct VoronoiCells {
+    std::vector<Point2> vertices;
+    std::vector<std::uint32_t> site_offsets{0};  ///< vertices.size() + 1 entries
+    std::vector<std::uint32_t> sites;
+    std::vector<std::uint32_t> cell_offsets{0};  ///< input size + 1 entries
+    std::vector<std::uint32_t> cell_vertices;
+    std::vector<std::uint8_t> unbounded;  ///< per input index
+
+    std::size_t vertex_count() const noexcept { return vertices.size(); }
+    std::size_t site_count() const noexcept { return cell_offsets.size() - 1; }
+    std::span<const std::uint32_t> vertex_sites(std::size_t v) const noexcept {
+        return std::span(sites).subspan(site_offsets[v], site_offsets[v + 1] - site_offsets[v]);
+    }
+    std::span<const std::uint32_t> cell(std::size_t i) const noexcept {
+        return std::span(cell_vertices)
+            .subspan(cell_offsets[i], cell_offsets[i + 1] - cell_offsets[i]);
+    }
+};
+
 /// The diagram in compact arrays. "Site i" is input index i; a duplicate input point has
 /// its twin's cell (the same vertex list) and is listed beside it among a vertex's sites.
 ///
@@ -45,13 +66,7 @@ namespace exidel::delaunay {
 ///                             half-plane at either end, the whole plane for one site)
 ///                             between the perpendicular bisectors of chain[k-1], chain[k]
 ///                             and of chain[k], chain[k+1].
-struct VoronoiDiagram {
-    std::vector<Point2> vertices;
-    std::vector<std::uint32_t> site_offsets{0};  ///< vertices.size() + 1 entries
-    std::vector<std::uint32_t> sites;
-    std::vector<std::uint32_t> cell_offsets{0};  ///< input size + 1 entries
-    std::vector<std::uint32_t> cell_vertices;
-    std::vector<std::uint8_t> unbounded;
+struct VoronoiDiagram : VoronoiCells {
     std::vector<Point2> entry_ray, exit_ray;  ///< per input index; (0, 0) when bounded
     /// The Voronoi vertex of every Delaunay triangle (the dual map).
     std::vector<std::uint32_t> vertex_of_triangle;
@@ -64,15 +79,6 @@ struct VoronoiDiagram {
     std::uint64_t cocircular_tests = 0;
     std::uint64_t cocircular_merges = 0;
 
-    std::size_t vertex_count() const noexcept { return vertices.size(); }
-    std::size_t site_count() const noexcept { return cell_offsets.size() - 1; }
-    std::span<const std::uint32_t> vertex_sites(std::size_t v) const noexcept {
-        return std::span(sites).subspan(site_offsets[v], site_offsets[v + 1] - site_offsets[v]);
-    }
-    std::span<const std::uint32_t> cell(std::size_t i) const noexcept {
-        return std::span(cell_vertices)
-            .subspan(cell_offsets[i], cell_offsets[i + 1] - cell_offsets[i]);
-    }
 };
 
 /// A Delaunay triangle whose centre cannot be a vertex: its exact centre is beyond the
@@ -105,26 +111,11 @@ struct Box {
 /// exactly equidistant, also one whose cell only touches the box at that vertex and is
 /// therefore empty after clipping); a point the box adds lists the sites whose clipped
 /// cells have it as a corner (with their duplicates), by input index.
-struct ClippedVoronoi {
-    std::vector<Point2> vertices;
-    std::vector<std::uint32_t> site_offsets{0};
-    std::vector<std::uint32_t> sites;
-    std::vector<std::uint32_t> cell_offsets{0};
-    std::vector<std::uint32_t> cell_vertices;
-    /// As in the unclipped diagram: whether the cell itself is unbounded.
-    std::vector<std::uint8_t> unbounded;
+/// `unbounded` is as in the unclipped diagram: whether the cell itself is unbounded.
+struct ClippedVoronoi : VoronoiCells {
     /// How many of the vertices are Voronoi vertices (the rest the box added).
     std::size_t voronoi_vertex_count = 0;
 
-    std::size_t vertex_count() const noexcept { return vertices.size(); }
-    std::size_t site_count() const noexcept { return cell_offsets.size() - 1; }
-    std::span<const std::uint32_t> vertex_sites(std::size_t v) const noexcept {
-        return std::span(sites).subspan(site_offsets[v], site_offsets[v + 1] - site_offsets[v]);
-    }
-    std::span<const std::uint32_t> cell(std::size_t i) const noexcept {
-        return std::span(cell_vertices)
-            .subspan(cell_offsets[i], cell_offsets[i + 1] - cell_offsets[i]);
-    }
 };
 
 /// `d` (the diagram of `points`, triangulated by `t`) clipped to `box`. Throws
