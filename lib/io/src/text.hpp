@@ -1,7 +1,9 @@
 // exidel I/O (internal): small pieces shared by the readers and writers.
 #pragma once
 
+#include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <ostream>
 #include <string_view>
@@ -84,5 +86,27 @@ private:
     char buf_[capacity];
     std::size_t used_ = 0;
 };
+
+/// The opening of an SVG picture of `width` x `height` units with `margin` around it
+/// (the viewBox starts at -margin, -margin), up to and including the closing '>' of the
+/// <svg> tag and a newline; the caller writes the content and "</svg>".
+inline void svg_header(NumberWriter& w, double width, double height, double margin) {
+    w.text("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+           "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"")
+        .fixed(-margin, 0)
+        .text(" ")
+        .fixed(-margin, 0)
+        .text(" ")
+        .fixed(width + 2 * margin, 3)
+        .text(" ")
+        .fixed(height + 2 * margin, 3)
+        .text("\">\n");
+}
+
+/// The radius of a point's dot in a picture `size` units wide with n points: smaller as
+/// the points get denser, between 0.5 and 4 units.
+inline double svg_dot_radius(double size, std::size_t n) {
+    return std::clamp(size / (4 * std::sqrt(static_cast<double>(n) + 1)), 0.5, 4.0);
+}
 
 }  // namespace exidel::io::detail

@@ -140,16 +140,7 @@ void write_svg(std::ostream& out, std::span<const Point2> points, const Triangul
     const auto xy = [&](const char* command, std::uint32_t v) {
         w.text(command).fixed(f.x(points[v]), 3).text(" ").fixed(f.y(points[v]), 3);
     };
-    w.text("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-           "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"")
-        .fixed(-Frame::margin, 0)
-        .text(" ")
-        .fixed(-Frame::margin, 0)
-        .text(" ")
-        .fixed(f.width + 2 * Frame::margin, 3)
-        .text(" ")
-        .fixed(f.height + 2 * Frame::margin, 3)
-        .text("\">\n");
+    detail::svg_header(w, f.width, f.height, Frame::margin);
     w.text("<!-- exidel triangulation: ")
         .number(static_cast<std::uint64_t>(points.size()))
         .text(" points, ")
@@ -189,8 +180,7 @@ void write_svg(std::ostream& out, std::span<const Point2> points, const Triangul
         }
         w.text(one_cycle ? " Z\"/>\n</g>\n" : "\"/>\n</g>\n");
     }
-    const double r = std::clamp(Frame::size / (4 * std::sqrt(static_cast<double>(points.size()) + 1)),
-                                0.5, 4.0);
+    const double r = detail::svg_dot_radius(Frame::size, points.size());
     // The points as dots: zero-length subpaths with round caps of diameter 2r, in paths of
     // svg_path_items points. Not one <circle> each: librsvg refuses a file of more than
     // 10^6 elements.

@@ -247,25 +247,15 @@ void draw(std::ostream& out, std::span<const Point2> points, const Diagram& d,
     std::size_t merged = 0;
     for (std::size_t v = 0; v < voronoi_vertices; ++v) merged += distinct_sites(v) >= 4 ? 1 : 0;
     NumberWriter w(out);
-    w.text("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-           "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"")
-        .fixed(-Picture::margin, 0)
-        .text(" ")
-        .fixed(-Picture::margin, 0)
-        .text(" ")
-        .fixed(f.width() + 2 * Picture::margin, 3)
-        .text(" ")
-        .fixed(f.height() + 2 * Picture::margin, 3)
-        .text("\">\n<!-- exidel voronoi: ")
+    detail::svg_header(w, f.width(), f.height(), Picture::margin);
+    w.text("<!-- exidel voronoi: ")
         .number(static_cast<std::uint64_t>(points.size()))
         .text(" sites, ")
         .number(static_cast<std::uint64_t>(voronoi_vertices))
         .text(" Voronoi vertices, ")
         .number(static_cast<std::uint64_t>(merged))
         .text(" of them of four or more cocircular sites (ringed) -->\n");
-    // The sites' dot radius, as the triangulation's picture has it.
-    const double r = std::clamp(Picture::size / (4 * std::sqrt(static_cast<double>(points.size()) + 1)),
-                                0.5, 4.0);
+    const double r = detail::svg_dot_radius(Picture::size, points.size());
     {
         PathGroup g(w, "#3b5b92", std::clamp(r / 2, 0.25, 1.0));
         for (const std::uint64_t e : edges(d, closed)) {
