@@ -82,7 +82,7 @@ int main(int argc, char** argv) {
         }
     }
     const std::vector<Point2> points = make_points(input, n);
-    std::vector<double> tri_ms, vor_ms, cgal_tri_ms, cgal_dual_ms, cgal_vd_ms;
+    std::vector<double> tri_ms, vor_ms, centre_ms, cgal_tri_ms, cgal_dual_ms, cgal_vd_ms;
     std::uint64_t stages[3] = {0, 0, 0};
     std::size_t vertices = 0, triangles = 0, cgal_vd_vertices = 0;
     std::uint64_t tests = 0, merges = 0;
@@ -98,6 +98,11 @@ int main(int argc, char** argv) {
             const auto t2 = Clock::now();
             tri_ms.push_back(ms(t0, t1));
             vor_ms.push_back(ms(t1, t2));
+            // The step's first part alone (every circumcentre, correctly rounded), timed
+            // again apart from the step: the rest is merging and the cells.
+            const auto t3 = Clock::now();
+            const delaunay::detail::VoronoiBuilder centres(points, res.triangulation, threads);
+            centre_ms.push_back(ms(t3, Clock::now()));
             std::copy(std::begin(d.stage_counts), std::end(d.stage_counts), stages);
             vertices = d.vertex_count();
             triangles = res.triangulation.triangle_count();
@@ -142,6 +147,8 @@ int main(int argc, char** argv) {
     std::printf("exidel triangulate          %9.1f   (%zu triangles)\n", tri, triangles);
     std::printf("exidel voronoi step         %9.1f   (%zu vertices; %llu cocircular tests, %llu merges)\n",
                 vor, vertices, static_cast<unsigned long long>(tests), static_cast<unsigned long long>(merges));
+    std::printf("  of which circumcentres    %9.1f   (timed apart; the rest: merging and cells)\n",
+                median(centre_ms));
     std::printf("exidel total                %9.1f\n", tri + vor);
     std::printf("CGAL Epick triangulate      %9.1f\n", ctri);
     std::printf("CGAL dual() of every face   %9.1f\n", cdual);
