@@ -1,0 +1,20 @@
+"""exidel: exact geometric predicates and Delaunay triangulation.
+
+    import numpy as np, exidel
+    pts = np.random.default_rng(1).random((1000, 2))
+    exidel.orient2d(pts[:-2], pts[1:-1], pts[2:])        # int8 signs, exact
+    tri = exidel.Delaunay(pts)                            # scipy.spatial.Delaunay's names
+    exidel.certify(pts, tri).ok                           # True, decided exactly
+    vor = exidel.Voronoi(pts)                             # correctly rounded vertices
+
+Submodules imported on demand: exidel.research (the studies of `exidel study`),
+exidel.plot (matplotlib), exidel.testing (Hypothesis strategies).
+"""
+
+from ._core import (__version__, algorithms, build_info, compare_distance, incircle,
+                    incircle_cosine, kernel_spellings, orient2d)
+from ._delaunay import Certificate, Delaunay, TriangulationError, certify
+
+__all__ = ["__version__", "algorithms", "build_info", "kernel_spellings", "orient2d",
+           "incircle", "incircle_cosine", "compare_distance", "Delaunay", "TriangulationError",
+           "certify", "Certificate"]

@@ -1,0 +1,77 @@
+// exidel's Python module: what every binding shares. Arrays of points come in as numpy
+// float64 arrays of shape (n, 2) (or (2,) for one point), are checked once (shape,
+// finiteness, with the first bad row named in the ValueError), and are then read in place
+// as exidel::Point2 (two doubles, the layout of a C-contiguous row). Arrays go back to
+// Python without a copy: a std::vector is moved into a capsule that numpy owns.
+#pragma once
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "exidel/predicates/registry.hpp"
+#include "exidel/predicates/types.hpp"
+
+namespace exidel::python {
+
+namespace py = pybind11;
+
+static_assert(sizeof(Point2) == 2 * sizeof(double) && alignof(Point2) == alignof(double),
+              "a C-contiguous (n, 2) float64 array is read as n Point2");
+
+/// A float64 array, C-contiguous (numpy converts other dtypes and layouts once).
+using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+/// Points of one argument: n rows, or a single point (shape (2,)) that broadcasts.
+struct Points {
+    DoubleArray array;  ///< keeps the data alive
+    const Point2* data = nullptr;
+    std::size_t rows = 0;
+    bool single = false;  ///< shape (2,): one point for every row of the other arguments
+
+    std::span<const Point2> span() const noexcept { return {data, rows}; }
+};
+
+/// Converts `object` to points, or throws ValueError naming the argument: the shape is
+/// not (n, 2) or (2,), or a coordinate is NaN or infinite (the first such row).
+Points to_points(const py::handle& object, const char* argument);
+
+/// The kernel a name spells (every name of the CLI: "double", "adaptive", "mpfr:113",
+/// ...); ValueError listing the spellings otherwise.
+AnyKernel to_kernel(const std::string& name);
+
+/// A numpy array owning `values`, with the given shape (the product must be its size).
+template <class T>
+py::array_t<T> to_numpy(std::vector<T>&& values, std::vector<py::ssize_t> shape) {
+    auto* owned = new std::vector<T>(std::move(values));
+    py::capsule free(owned, [](void* p) { delete static_cast<std::vector<T>*>(p); });
+    return py::array_t<T>(std::move(shape), owned->data(), free);
+}
+template <class T>
+py::array_t<T> to_numpy(std::vector<T>&& values) {
+    const auto n = static_cast<py::ssize_t>(values.size());
+    return to_numpy(std::move(values), {n});
+}
+
+/// Index arrays as numpy int32 (what scipy.spatial uses), without a copy: every index is
+/// below 2^31 (the triangulation's own limit, max_points).
+py::array_t<std::int32_t> to_int32(std::vector<std::uint32_t>&& values,
+                                   std::vector<py::ssize_t> shape);
+inline py::array_t<std::int32_t> to_int32(std::vector<std::uint32_t>&& values) {
+    const auto n = static_cast<py::ssize_t>(values.size());
+    return to_int32(std::move(values), {n});
+}
+
+/// (n, 2) float64 array of points.
+py::array_t<double> to_numpy(std::vector<Point2>&& points);
+
+void bind_predicates(py::module_& m);
+void bind_delaunay(py::module_& m);
+
+}  // namespace exidel::python

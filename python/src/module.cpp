@@ -1,0 +1,103 @@
+// exidel's Python module, exidel._core: the compiled layer under the `exidel` package.
+// Everything here converts and dispatches; the geometry is in exidel::predicates and
+// exidel::delaunay, compiled once with their own floating-point flags.
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include "common.hpp"
+#include "exidel/delaunay/algorithms.hpp"
+#include "exidel/predicates/build_info.hpp"
+
+namespace exidel::python {
+
+Points to_points(const py::handle& object, const char* argument) {
+    Points p;
+    try {
+        p.array = DoubleArray::ensure(object);
+    } catch (const py::error_already_set&) {
+        p.array = DoubleArray();
+    }
+    if (!p.array) {
+        throw py::value_error(std::string(argument) + ": not convertible to a float64 array");
+    }
+    if (p.array.ndim() == 1 && p.array.shape(0) == 2) {
+        p.single = true;
+        p.rows = 1;
+    } else if (p.array.ndim() == 2 && p.array.shape(1) == 2) {
+        p.rows = static_cast<std::size_t>(p.array.shape(0));
+    } else {
+        std::string shape = "(";
+        for (py::ssize_t d = 0; d < p.array.ndim(); ++d) {
+            shape += (d ? ", " : "") + std::to_string(p.array.shape(d));
+        }
+        throw py::value_error(std::string(argument) + ": expected shape (n, 2) or (2,), got " +
+                              shape + (p.array.ndim() == 1 ? ",)" : ")"));
+    }
+    p.data = reinterpret_cast<const Point2*>(p.array.data());
+    for (std::size_t i = 0; i < p.rows; ++i) {
+        const Point2 q = p.data[i];
+        if (!std::isfinite(q.x) || !std::isfinite(q.y)) {
+            throw py::value_error(std::string(argument) + ": row " + std::to_string(i) +
+                                  " is not finite (" + py::repr(py::float_(q.x)).cast<std::string>() +
+                                  ", " + py::repr(py::float_(q.y)).cast<std::string>() + ")");
+        }
+    }
+    return p;
+}
+
+AnyKernel to_kernel(const std::string& name) {
+    std::string error;
+    if (auto kernel = parse_kernel(name, error)) return *std::move(kernel);
+    throw py::value_error(error);
+}
+
+py::array_t<std::int32_t> to_int32(std::vector<std::uint32_t>&& values,
+                                   std::vector<py::ssize_t> shape) {
+    auto* owned = new std::vector<std::uint32_t>(std::move(values));
+    py::capsule free(owned, [](void* p) { delete static_cast<std::vector<std::uint32_t>*>(p); });
+    // Same size and representation for values below 2^31 (C++20: two's complement).
+    return py::array_t<std::int32_t>(std::move(shape),
+                                     reinterpret_cast<const std::int32_t*>(owned->data()), free);
+}
+
+py::array_t<double> to_numpy(std::vector<Point2>&& points) {
+    auto* owned = new std::vector<Point2>(std::move(points));
+    py::capsule free(owned, [](void* p) { delete static_cast<std::vector<Point2>*>(p); });
+    return py::array_t<double>({static_cast<py::ssize_t>(owned->size()), py::ssize_t{2}},
+                               reinterpret_cast<const double*>(owned->data()), free);
+}
+
+}  // namespace exidel::python
+
+PYBIND11_MODULE(_core, m) {
+    namespace py = pybind11;
+    using namespace exidel::python;
+    m.doc() = "exidel's compiled layer: vectorised predicates, triangulation, certifier, Voronoi";
+    m.attr("__version__") = EXIDEL_VERSION_STRING;
+
+    py::list kernels;
+    for (std::string_view k : exidel::build_info().kernels) kernels.append(py::str(std::string(k)));
+    m.attr("kernel_spellings") = kernels;
+    py::list algorithms;
+    for (const auto& a : exidel::delaunay::algorithms()) algorithms.append(py::str(std::string(a.name)));
+    m.attr("algorithms") = algorithms;
+    m.def("kernel_name", [](const std::string& name) { return exidel::kernel_name(to_kernel(name)); },
+          "The canonical name of a kernel spelling (ValueError for an unknown one).");
+    m.def("kernel_is_exact", [](const std::string& name) { return exidel::kernel_is_exact(to_kernel(name)); });
+    m.def("build_info", [] {
+        const exidel::BuildInfo& b = exidel::build_info();
+        py::dict d;
+        d["version"] = std::string(b.version);
+        d["commit"] = std::string(b.commit);
+        d["compiler"] = std::string(b.compiler);
+        d["gmp"] = std::string(b.gmp);
+        d["mpfr"] = std::string(b.mpfr);
+        d["boost"] = std::string(b.boost);
+        d["long_double"] = std::string(b.long_double);
+        return d;
+    });
+
+    bind_predicates(m);
+    bind_delaunay(m);
+}

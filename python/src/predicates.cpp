@@ -1,0 +1,122 @@
+// exidel.orient2d, incircle, incircle_cosine, compare_distance: one predicate over rows of
+// point arrays. The loop runs here with the GIL released, compiled once per kernel type
+// (one std::visit per call, none per row); a (2,) or (1, 2) argument broadcasts.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <variant>
+
+#include "common.hpp"
+#include "exidel/predicates/predicate.hpp"
+
+namespace exidel::python {
+
+namespace {
+
+template <Predicate P, class K, std::size_t N>
+void evaluate_rows(const K& kernel, const std::array<const Point2*, N>& data,
+                   const std::array<std::size_t, N>& stride, std::int8_t* out, std::size_t rows) {
+    for (std::size_t i = 0; i < rows; ++i) {
+        std::array<Point2, N> q;
+        for (std::size_t k = 0; k < N; ++k) q[k] = data[k][i * stride[k]];
+        Sign s;
+        if constexpr (P == Predicate::orient2d) {
+            s = kernel.orient2d(q[0], q[1], q[2]);
+        } else if constexpr (P == Predicate::incircle) {
+            s = kernel.incircle(q[0], q[1], q[2], q[3]);
+        } else if constexpr (P == Predicate::incircle_cosine) {
+            s = kernel.incircle_cosine(q[0], q[1], q[2], q[3]);
+        } else {
+            s = kernel.compare_distance(q[0], q[1], q[2]);
+        }
+        out[i] = static_cast<std::int8_t>(to_int(s));
+    }
+}
+
+template <Predicate P, std::size_t N>
+py::array_t<std::int8_t> vectorised(const std::array<py::object, N>& args,
+                                    const std::array<const char*, N>& names,
+                                    const std::string& kernel_name) {
+    const AnyKernel kernel = to_kernel(kernel_name);
+    std::array<Points, N> points;
+    // numpy's broadcasting: every (n, 2) argument has the same n, or n = 1.
+    std::size_t rows = 1;
+    bool any_rows = false;  // some argument has shape (n, 2): the result has shape (n,)
+    for (std::size_t k = 0; k < N; ++k) {
+        points[k] = to_points(args[k], names[k]);
+        if (points[k].single) continue;
+        any_rows = true;
+        if (points[k].rows == 1) continue;
+        if (rows != 1 && points[k].rows != rows) {
+            throw py::value_error(std::string(names[k]) + ": " + std::to_string(points[k].rows) +
+                                  " rows, but an earlier argument has " + std::to_string(rows));
+        }
+        rows = points[k].rows;
+    }
+    std::array<const Point2*, N> data;
+    std::array<std::size_t, N> stride;
+    for (std::size_t k = 0; k < N; ++k) {
+        data[k] = points[k].data;
+        stride[k] = points[k].rows == 1 ? 0 : 1;
+    }
+    std::vector<py::ssize_t> shape;
+    if (any_rows) shape.push_back(static_cast<py::ssize_t>(rows));
+    py::array_t<std::int8_t> result(shape);
+    std::int8_t* out = result.mutable_data();
+    {
+        py::gil_scoped_release release;
+        std::visit([&](const auto& k) { evaluate_rows<P>(k, data, stride, out, rows); }, kernel);
+    }
+    return result;
+}
+
+constexpr const char* kernel_doc =
+    " kernel: any spelling of `exidel kernels` (\"double\", \"long-double\", \"adaptive\","
+    " \"exact\", \"exact-cpp\", \"mpfr:<bits>\"). Each point argument is an array of shape"
+    " (n, 2) or one point (2,), float64 (converted once otherwise); a single point or a"
+    " (1, 2) array broadcasts. Returns the signs as int8 (-1, 0, 1), shape (n,), or () when"
+    " every argument is one point. A NaN or infinite coordinate raises ValueError naming the"
+    " argument and the first bad row.";
+
+}  // namespace
+
+void bind_predicates(py::module_& m) {
+    m.def(
+        "orient2d",
+        [](py::object a, py::object b, py::object c, const std::string& kernel) {
+            return vectorised<Predicate::orient2d, 3>({a, b, c}, {"a", "b", "c"}, kernel);
+        },
+        py::arg("a"), py::arg("b"), py::arg("c"), py::arg("kernel") = "adaptive",
+        (std::string("Sign of the orientation of (a, b, c): +1 counter-clockwise, -1 clockwise,"
+                     " 0 collinear.") + kernel_doc).c_str());
+    m.def(
+        "incircle",
+        [](py::object a, py::object b, py::object c, py::object d, const std::string& kernel) {
+            return vectorised<Predicate::incircle, 4>({a, b, c, d}, {"a", "b", "c", "d"}, kernel);
+        },
+        py::arg("a"), py::arg("b"), py::arg("c"), py::arg("d"), py::arg("kernel") = "adaptive",
+        (std::string("Shewchuk's in-circle determinant: +1 when d is inside the circle through"
+                     " a, b, c (counter-clockwise), -1 outside, 0 on it; the sign flips for a"
+                     " clockwise abc.") + kernel_doc).c_str());
+    m.def(
+        "incircle_cosine",
+        [](py::object a, py::object b, py::object c, py::object d, const std::string& kernel) {
+            return vectorised<Predicate::incircle_cosine, 4>({a, b, c, d}, {"a", "b", "c", "d"},
+                                                             kernel);
+        },
+        py::arg("a"), py::arg("b"), py::arg("c"), py::arg("d"), py::arg("kernel") = "adaptive",
+        (std::string("Cai's cosine in-circle test (the paper's Section 5): +1 when d is inside"
+                     " the circle through a, b, c. An in-circle test only when c and d are"
+                     " strictly on opposite sides of line ab (kernel.hpp states the"
+                     " precondition).") + kernel_doc).c_str());
+    m.def(
+        "compare_distance",
+        [](py::object c, py::object p, py::object q, const std::string& kernel) {
+            return vectorised<Predicate::compare_distance, 3>({c, p, q}, {"c", "p", "q"}, kernel);
+        },
+        py::arg("c"), py::arg("p"), py::arg("q"), py::arg("kernel") = "adaptive",
+        (std::string("Sign of |p - c|^2 - |q - c|^2.") + kernel_doc).c_str());
+}
+
+}  // namespace exidel::python
