@@ -14,7 +14,10 @@ exidel.plot (matplotlib), exidel.testing (Hypothesis strategies).
 from ._core import (__version__, algorithms, build_info, compare_distance, incircle,
                     incircle_cosine, kernel_spellings, orient2d)
 from ._delaunay import Certificate, Delaunay, TriangulationError, certify
+from ._voronoi import ClippedVoronoi, Voronoi
+from ._core import circumcenter, circumcenter_statuses
 
 __all__ = ["__version__", "algorithms", "build_info", "kernel_spellings", "orient2d",
            "incircle", "incircle_cosine", "compare_distance", "Delaunay", "TriangulationError",
-           "certify", "Certificate"]
+           "certify", "Certificate", "Voronoi", "ClippedVoronoi", "circumcenter",
+           "circumcenter_statuses"]

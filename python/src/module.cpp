@@ -100,4 +100,5 @@ PYBIND11_MODULE(_core, m) {
 
     bind_predicates(m);
     bind_delaunay(m);
+    bind_voronoi(m);
 }

@@ -1,0 +1,127 @@
+"""exidel.Voronoi: the Voronoi diagram with scipy.spatial.Voronoi's names, exact topology
+and correctly rounded vertices."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from . import _core
+from ._delaunay import TriangulationError
+
+
+def _split(offsets, values):
+    return [values[offsets[k]:offsets[k + 1]] for k in range(offsets.size - 1)]
+
+
+class ClippedVoronoi:
+    """The diagram intersected with a box (Voronoi.clip): every cell a convex polygon.
+
+    vertices       (V, 2) float64: the Voronoi vertices inside the box or on it, then the
+                   points the box adds (edge crossings, corners), each the correctly
+                   rounded value of an exact point
+    voronoi_vertex_count  how many of them are Voronoi vertices
+    regions        per input point, the vertex indices of its clipped cell,
+                   counter-clockwise (empty when the cell misses the box)
+    vertex_sites   per vertex, the sites whose cells have it as a corner
+    """
+
+    def __init__(self, d):
+        self.vertices = d["vertices"]
+        self.voronoi_vertex_count = int(d["voronoi_vertex_count"])
+        self.regions = _split(d["cell_offsets"], d["cell_vertices"])
+        self.vertex_sites = _split(d["site_offsets"], d["sites"])
+        self.unbounded = d["unbounded"]
+
+
+class Voronoi:
+    """The Voronoi diagram of 2D points.
+
+    Voronoi(points, kernel="adaptive", algorithm="external", threads=1)
+
+    Every vertex is the centre of a maximal set of exactly cocircular Delaunay triangles
+    (decided by the kernel's in-circle test, never by a tolerance) and its coordinates are
+    the doubles nearest to the exact centre. Duplicate points share their twin's cell. A
+    centre beyond the largest double raises ValueError; an inexact kernel's failed
+    triangulation raises exidel.TriangulationError.
+
+    scipy's names and meaning:
+      points, vertices (V, 2), regions (one list of vertex indices per input point,
+      counter-clockwise, with -1 where an unbounded cell goes to infinity),
+      point_region (input point -> its entry of regions: here the identity),
+      ridge_points (r, 2), ridge_vertices (list of [v, w], -1 for a point at infinity)
+    exidel's own:
+      vertex_sites   per vertex, every site exactly equidistant, counter-clockwise
+      unbounded      (n,) bool
+      entry_ray, exit_ray  (n, 2): an unbounded cell comes in from infinity along
+                     -entry_ray into its first vertex and leaves along exit_ray from its
+                     last (outward hull-edge normals, exact in sign); (0, 0) if bounded
+      collinear      no vertices (all sites on one line); `chain` orders them
+      triangulation  the exidel.Delaunay arrays it is the dual of (simplices, halfedges)
+      vertex_of_triangle  the vertex of every Delaunay triangle
+      stats          how many centres each stage of the construction decided, and the
+                     cocircularity tests
+    """
+
+    ndim = 2
+
+    def __init__(self, points, kernel="adaptive", algorithm="external", threads=1):
+        self.points = np.ascontiguousarray(points, dtype=np.float64)
+        self._data = _core.VoronoiData(self.points, kernel, algorithm, threads)
+        failure = self._data.failure()
+        if failure is not None:
+            raise TriangulationError(*failure)
+        d = self._data.arrays()
+        self.vertices = d["vertices"]
+        self.unbounded = d["unbounded"]
+        self.entry_ray = d["entry_ray"]
+        self.exit_ray = d["exit_ray"]
+        self.vertex_of_triangle = d["vertex_of_triangle"]
+        self.collinear = bool(d["collinear"])
+        self.chain = d["chain"]
+        self.simplices = d["triangles"]
+        self.halfedges = d["halfedges"]
+        self.stats = d["stats"]
+        self.vertex_sites = _split(d["site_offsets"], d["sites"])
+        cells = _split(d["cell_offsets"], d["cell_vertices"])
+        self.regions = [list(c) + ([-1] if u else []) for c, u in zip(cells, self.unbounded)]
+        self.point_region = np.arange(self.points.shape[0], dtype=np.int32)
+        self._ridges(d["vertex_of_input"])
+
+    def _ridges(self, vertex_of_input):
+        if self.collinear:
+            # Consecutive sites along the line are separated by a whole bisector line.
+            self.ridge_points = np.stack([self.chain[:-1], self.chain[1:]], axis=1).astype(np.int32)
+            self.ridge_vertices = [[-1, -1] for _ in range(len(self.ridge_points))]
+            return
+        flat = self.simplices.reshape(-1)
+        e = np.arange(flat.size)
+        nxt = np.where(e % 3 == 2, e - 2, e + 1)
+        twin = self.halfedges
+        # Each Delaunay edge once (the half-edge with the larger twin, or a boundary one),
+        # except those inside a cocircular group: both sides have the same vertex, and
+        # their sites' cells meet in that point only.
+        keep = (twin < e)
+        keep &= (twin < 0) | (self.vertex_of_triangle[e // 3] != self.vertex_of_triangle[np.maximum(twin, 0) // 3])
+        e = e[keep]
+        self.ridge_points = np.stack([flat[e], flat[nxt[e]]], axis=1).astype(np.int32)
+        v = self.vertex_of_triangle[e // 3].astype(np.int64)
+        w = np.where(twin[e] < 0, -1, self.vertex_of_triangle[np.maximum(twin[e], 0) // 3])
+        self.ridge_vertices = np.stack([w, v], axis=1).tolist()
+
+    @property
+    def npoints(self):
+        return int(self.points.shape[0])
+
+    def clip(self, xmin, ymin, xmax, ymax):
+        """The diagram inside the box [xmin, xmax] x [ymin, ymax] (exact rationals, every
+        new point correctly rounded): a ClippedVoronoi."""
+        try:
+            return ClippedVoronoi(self._data.clip(float(xmin), float(ymin), float(xmax), float(ymax)))
+        except RuntimeError as error:  # std::invalid_argument: the box
+            raise ValueError(str(error)) from None
+
+    def __repr__(self):
+        return (f"<exidel.Voronoi: {self.npoints} sites, {len(self.vertices)} vertices, "
+                f"{sum(map(bool, self.unbounded))} unbounded cells>")
+
+
