@@ -189,7 +189,8 @@ def certify(points, triangulation, reorient=True):
                    the rest is derived: twins from shared edges, the boundary cycle,
                    duplicates from the points; with reorient=True (the default) clockwise
                    triangles are turned counter-clockwise first, since scipy does not fix
-                   the orientation. An empty array claims that the points are collinear.
+                   the orientation. Any copy of a repeated point may stand for it. An
+                   empty array claims that the points are collinear.
     Checks: shape, topology, every triangle counter-clockwise, the boundary is the convex
     hull, every distinct point is a vertex, Euler's count, every edge locally Delaunay
     (exact predicates throughout). Returns a Certificate.

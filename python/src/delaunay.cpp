@@ -238,6 +238,9 @@ py::dict certify_simplices(py::object points_object, IndexArray simplices, bool 
             t.collinear = true;
             t.hull = lexicographic_chain(p, t);
         } else if (in_range) {
+            // Any copy of a repeated point may stand for it (scipy uses whichever copy
+            // qhull kept): the certifier's vertices are first occurrences.
+            for (std::uint32_t& v : t.triangles) v = t.vertex_of_input[v];
             if (reorient) {
                 for (std::size_t i = 0; i < t.triangles.size(); i += 3) {
                     auto* v = &t.triangles[i];
