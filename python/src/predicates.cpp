@@ -2,6 +2,7 @@
 // point arrays. The loop runs here with the GIL released, compiled once per kernel type
 // (one std::visit per call, none per row); a (2,) or (1, 2) argument broadcasts.
 #include <array>
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -79,6 +80,38 @@ constexpr const char* kernel_doc =
     " every argument is one point. A NaN or infinite coordinate raises ValueError naming the"
     " argument and the first bad row.";
 
+/// The benchmark's reference: the C++ loop alone over points already in memory (the
+/// arguments converted beforehand, no result array allocated per call), in seconds.
+double loop_seconds(const std::string& predicate, const py::tuple& args, const std::string& kernel_name) {
+    const AnyKernel kernel = to_kernel(kernel_name);
+    const auto p = predicate_from_name(predicate);
+    if (!p || point_count(*p) != args.size()) throw py::value_error("predicate and arguments do not match");
+    std::vector<Points> points;
+    for (std::size_t k = 0; k < args.size(); ++k) points.push_back(to_points(args[k], "argument"));
+    const std::size_t rows = points[0].rows;
+    for (const Points& q : points) {
+        if (q.rows != rows) throw py::value_error("every argument needs the same rows");
+    }
+    std::vector<std::int8_t> out(rows);
+    py::gil_scoped_release release;
+    const auto start = std::chrono::steady_clock::now();
+    std::visit(
+        [&](const auto& k) {
+            if (*p == Predicate::orient2d) {
+                evaluate_rows<Predicate::orient2d, std::decay_t<decltype(k)>, 3>(
+                    k, {points[0].data, points[1].data, points[2].data}, {1, 1, 1}, out.data(), rows);
+            } else if (*p == Predicate::incircle) {
+                evaluate_rows<Predicate::incircle, std::decay_t<decltype(k)>, 4>(
+                    k, {points[0].data, points[1].data, points[2].data, points[3].data}, {1, 1, 1, 1},
+                    out.data(), rows);
+            } else {
+                throw std::invalid_argument("loop_seconds times orient2d and incircle");
+            }
+        },
+        kernel);
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 }  // namespace
 
 void bind_predicates(py::module_& m) {
@@ -117,6 +150,9 @@ void bind_predicates(py::module_& m) {
         },
         py::arg("c"), py::arg("p"), py::arg("q"), py::arg("kernel") = "adaptive",
         (std::string("Sign of |p - c|^2 - |q - c|^2.") + kernel_doc).c_str());
+    m.def("_loop_seconds", &loop_seconds, py::arg("predicate"), py::arg("args"),
+          py::arg("kernel") = "adaptive",
+          "For benchmarks: seconds of the bare C++ loop of orient2d or incircle over the rows.");
 }
 
 }  // namespace exidel::python
