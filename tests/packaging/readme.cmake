@@ -140,7 +140,7 @@ elseif(MODE STREQUAL "shared")
   set(build ${WORK_DIR}/exidel)
   run("configure exidel (shared)" ${CMAKE_COMMAND} -S ${EXIDEL_SOURCE_DIR} -B ${build}
       ${common_args} -DBUILD_SHARED_LIBS=ON -DEXIDEL_BUILD_TESTS=OFF -DEXIDEL_BUILD_CLI=OFF
-      -DEXIDEL_BUILD_BENCH=OFF -DEXIDEL_INSTALL=ON -DCMAKE_EXPORT_COMPILE_COMMANDS=ON)
+      -DEXIDEL_BUILD_BENCH=OFF -DEXIDEL_BUILD_PYTHON=OFF -DEXIDEL_INSTALL=ON -DCMAKE_EXPORT_COMPILE_COMMANDS=ON)
   # Only the installed libraries: exidel::research and the example are not installed, and
   # building them would only cost time here.
   set(libraries predicates delaunay io)

@@ -16,7 +16,7 @@ if(MODE STREQUAL "install")
   set(prefix ${WORK_DIR}/prefix)
   run("configure exidel" ${CMAKE_COMMAND} -S ${EXIDEL_SOURCE_DIR} -B ${WORK_DIR}/exidel
       ${common_args} -DEXIDEL_BUILD_TESTS=OFF -DEXIDEL_BUILD_CLI=OFF
-      -DEXIDEL_BUILD_BENCH=OFF -DEXIDEL_INSTALL=ON)
+      -DEXIDEL_BUILD_BENCH=OFF -DEXIDEL_BUILD_PYTHON=OFF -DEXIDEL_INSTALL=ON)
   # Only the libraries the package installs: exidel::research (not installed) takes most
   # of a full build's time here, and the main build compiles it anyway.
   run("build exidel" ${CMAKE_COMMAND} --build ${WORK_DIR}/exidel
