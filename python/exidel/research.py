@@ -26,13 +26,14 @@ import dataclasses
 import os
 import re
 import shutil
-import struct
 import subprocess
 import tempfile
 import time
 from pathlib import Path
 
 import numpy as np
+
+from . import _ulp
 
 __all__ = ["STUDIES", "StudyError", "StudyOptionError", "StudyResult", "Classification",
            "FailureMap", "cli_path", "run", "failure_map", "precision", "triangulation",
@@ -362,29 +363,9 @@ def read_table(path):
 # ---------------------------------------------------------------------------------------
 # Failure maps in Python
 
-_MAX_KEY = 0x7FEFFFFFFFFFFFFF  # the bits of the largest finite double
-
-
-def _key(v):
-    bits = struct.unpack("<q", struct.pack("<d", v))[0]
-    return bits if bits >= 0 else -(bits & 0x7FFFFFFFFFFFFFFF)  # -0.0 and +0.0 both 0
-
-
-def _from_key(k):
-    bits = k if k >= 0 else (-k) | -0x8000000000000000
-    return struct.unpack("<d", struct.pack("<q", bits))[0]
-
-
 def nudge(v, steps):
-    """v moved by |steps| representable doubles (up if steps > 0), through zero and the
-    subnormals like any other step, stopping at the largest finite magnitude: exidel's
-    testing::nudge, in one step on the ordered-integer view of the bits."""
-    v = float(v)
-    if not np.isfinite(v):
-        raise ValueError("nudge: v must be finite")
-    if steps == 0:
-        return v
-    return _from_key(max(-_MAX_KEY, min(_MAX_KEY, _key(v) + int(steps))))
+    """v moved by |steps| representable doubles (exidel.testing.nudge: the C++ testing::nudge)."""
+    return _ulp.nudge(v, steps)
 
 
 _ARITY = {"orient2d": 3, "incircle": 4, "incircle_cosine": 4, "compare_distance": 3}
@@ -395,12 +376,7 @@ def _lattice_circle(s):
     return [(2 + x * r, 2 + y * r) for x, y in ((-5, 0), (4, 3), (-3, 4), (3, -4))]
 
 
-_KETTNER = [
-    [(0.5, 0.5), (12.0, 12.0), (24.0, 24.0)],
-    [(0.50000000000002531, 0.5000000000000171), (17.300000000000001, 17.300000000000001),
-     (24.00000000000005, 24.0000000000000517765)],
-    [(0.5, 0.5), (8.8000000000000007, 8.8000000000000007), (12.1, 12.1)],
-]
+_KETTNER = [list(c) for c in _ulp.KETTNER_CONFIGURATIONS]
 
 
 def failure_map_presets():
