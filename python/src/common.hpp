@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "exidel/delaunay/algorithms.hpp"
 #include "exidel/predicates/registry.hpp"
 #include "exidel/predicates/types.hpp"
 
@@ -45,6 +46,9 @@ Points to_points(const py::handle& object, const char* argument);
 /// The kernel a name spells (every name of the CLI: "double", "adaptive", "mpfr:113",
 /// ...); ValueError listing the spellings otherwise.
 AnyKernel to_kernel(const std::string& name);
+
+/// The algorithm a name spells (exidel.algorithms); ValueError listing them otherwise.
+delaunay::Algorithm to_algorithm(const std::string& name);
 
 /// A numpy array owning `values`, with the given shape (the product must be its size).
 template <class T>

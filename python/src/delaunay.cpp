@@ -28,12 +28,7 @@ using delaunay::Strategy;
 delaunay::Options to_options(const std::string& algorithm, const std::string& incircle,
                              const std::string& strategy, unsigned threads) {
     delaunay::Options o;
-    if (auto a = delaunay::algorithm_from_name(algorithm)) {
-        o.algorithm = *a;
-    } else {
-        throw py::value_error("unknown algorithm '" + algorithm + "'; expected one of " +
-                              delaunay::algorithm_spellings());
-    }
+    o.algorithm = to_algorithm(algorithm);
     if (incircle == "determinant") {
         o.incircle = InCirclePolicy::determinant;
     } else if (incircle == "cosine") {

@@ -52,6 +52,12 @@ AnyKernel to_kernel(const std::string& name) {
     throw py::value_error(error);
 }
 
+delaunay::Algorithm to_algorithm(const std::string& name) {
+    if (auto a = delaunay::algorithm_from_name(name)) return *a;
+    throw py::value_error("unknown algorithm '" + name + "'; expected one of " +
+                          delaunay::algorithm_spellings());
+}
+
 py::array_t<std::int32_t> to_int32(std::vector<std::uint32_t>&& values,
                                    std::vector<py::ssize_t> shape) {
     auto* owned = new std::vector<std::uint32_t>(std::move(values));

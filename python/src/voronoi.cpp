@@ -49,12 +49,7 @@ public:
         points_.assign(p.data, p.data + p.rows);
         const AnyKernel kernel = to_kernel(kernel_name);
         delaunay::Options options;
-        if (auto a = delaunay::algorithm_from_name(algorithm)) {
-            options.algorithm = *a;
-        } else {
-            throw py::value_error("unknown algorithm '" + algorithm + "'; expected one of " +
-                                  delaunay::algorithm_spellings());
-        }
+        options.algorithm = to_algorithm(algorithm);
         options.threads = threads;
         std::optional<std::string> error;
         {

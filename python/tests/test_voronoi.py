@@ -120,6 +120,27 @@ def test_errors():
         exidel.Voronoi([[-big, 0.0], [big, 0.0], [0.0, 2.0 ** -1000]])
     with pytest.raises(exidel.TriangulationError):
         exidel.Voronoi(np.random.default_rng(3).random((1000, 2)), kernel="mpfr:2")
+    with pytest.raises(ValueError, match="unknown algorithm 'fortune'"):
+        exidel.Voronoi([[0, 0], [1, 0], [0, 1]], algorithm="fortune")
+    with pytest.raises(ValueError, match="threads"):
+        exidel.Voronoi([[0, 0], [1, 0], [0, 1]], threads=0)
+
+
+@pytest.mark.parametrize("algorithm", exidel.algorithms)
+def test_every_algorithm_gives_the_same_diagram(algorithm):
+    g = np.array([[i, j] for i in range(6) for j in range(6)], dtype=float)
+    pts = np.vstack([g, np.random.default_rng(4).random((50, 2)) * 5])
+    reference = exidel.Voronoi(pts)
+    v = exidel.Voronoi(pts, algorithm=algorithm, threads=2)
+    # The same diagram up to the numbering of the vertices (by first triangle, and the
+    # algorithms number triangles differently): each vertex with its sites, each cell.
+    def canonical(d):
+        vertices = {tuple(d.vertices[k]): tuple(sorted(d.vertex_sites[k].tolist()))
+                    for k in range(len(d.vertices))}
+        cells = [frozenset(tuple(d.vertices[k]) if k >= 0 else None for k in r) for r in d.regions]
+        return vertices, cells
+    assert len(v.vertices) == len(reference.vertices)
+    assert canonical(v) == canonical(reference)
 
 
 def test_circumcenter_rows(rng):
