@@ -162,7 +162,13 @@ class Delaunay:
 
 class Certificate:
     """What exidel.certify found: .ok, .findings (a list of dicts with kind, index, other,
-    message; at most 64), .total_findings, .kinds (the set of finding kinds)."""
+    message; at most 64), .total_findings, .kinds (the set of finding kinds).
+
+    An index names a half-edge 3t + k (the edge from vertex k of triangle t to the next),
+    a triangle, a hull position or an input point, as the message says. For a bare array
+    of simplices, t is the row of that array and k counts in the certified order: a
+    clockwise row has had its vertices 1 and 2 swapped (reorient=True), and a repeated
+    point is its first occurrence."""
 
     def __init__(self, d):
         self.ok = bool(d["ok"])
