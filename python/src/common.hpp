@@ -43,6 +43,15 @@ struct Points {
 /// not (n, 2) or (2,), or a coordinate is NaN or infinite (the first such row).
 Points to_points(const py::handle& object, const char* argument);
 
+/// numpy's broadcasting over point arguments: every (n, 2) argument has the same n, or
+/// n = 1 (it repeats). `rows` is that n; `shaped` whether some argument has shape (n, 2),
+/// so the result has shape (n,) rather than (). ValueError names a mismatched argument.
+struct Broadcast {
+    std::size_t rows = 1;
+    bool shaped = false;
+};
+Broadcast broadcast(std::span<const Points> points, std::span<const char* const> names);
+
 /// The kernel a name spells (every name of the CLI: "double", "adaptive", "mpfr:113",
 /// ...); ValueError listing the spellings otherwise.
 AnyKernel to_kernel(const std::string& name);

@@ -46,6 +46,21 @@ Points to_points(const py::handle& object, const char* argument) {
     return p;
 }
 
+Broadcast broadcast(std::span<const Points> points, std::span<const char* const> names) {
+    Broadcast b;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        if (points[k].single) continue;
+        b.shaped = true;
+        if (points[k].rows == 1) continue;
+        if (b.rows != 1 && points[k].rows != b.rows) {
+            throw py::value_error(std::string(names[k]) + ": " + std::to_string(points[k].rows) +
+                                  " rows, but an earlier argument has " + std::to_string(b.rows));
+        }
+        b.rows = points[k].rows;
+    }
+    return b;
+}
+
 AnyKernel to_kernel(const std::string& name) {
     std::string error;
     if (auto kernel = parse_kernel(name, error)) return *std::move(kernel);

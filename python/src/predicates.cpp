@@ -41,20 +41,8 @@ py::array_t<std::int8_t> vectorised(const std::array<py::object, N>& args,
                                     const std::string& kernel_name) {
     const AnyKernel kernel = to_kernel(kernel_name);
     std::array<Points, N> points;
-    // numpy's broadcasting: every (n, 2) argument has the same n, or n = 1.
-    std::size_t rows = 1;
-    bool any_rows = false;  // some argument has shape (n, 2): the result has shape (n,)
-    for (std::size_t k = 0; k < N; ++k) {
-        points[k] = to_points(args[k], names[k]);
-        if (points[k].single) continue;
-        any_rows = true;
-        if (points[k].rows == 1) continue;
-        if (rows != 1 && points[k].rows != rows) {
-            throw py::value_error(std::string(names[k]) + ": " + std::to_string(points[k].rows) +
-                                  " rows, but an earlier argument has " + std::to_string(rows));
-        }
-        rows = points[k].rows;
-    }
+    for (std::size_t k = 0; k < N; ++k) points[k] = to_points(args[k], names[k]);
+    const auto [rows, shaped] = broadcast(points, names);
     std::array<const Point2*, N> data;
     std::array<std::size_t, N> stride;
     for (std::size_t k = 0; k < N; ++k) {
@@ -62,7 +50,7 @@ py::array_t<std::int8_t> vectorised(const std::array<py::object, N>& args,
         stride[k] = points[k].rows == 1 ? 0 : 1;
     }
     std::vector<py::ssize_t> shape;
-    if (any_rows) shape.push_back(static_cast<py::ssize_t>(rows));
+    if (shaped) shape.push_back(static_cast<py::ssize_t>(rows));
     py::array_t<std::int8_t> result(shape);
     std::int8_t* out = result.mutable_data();
     {

@@ -1,6 +1,7 @@
 // exidel._core.VoronoiData (the arrays of delaunay::voronoi and delaunay::clip; the
 // scipy-like exidel.Voronoi in exidel/_voronoi.py names them) and exidel.circumcenter,
 // the correctly rounded circumcentres of rows of triangles.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -127,30 +128,24 @@ private:
 };
 
 py::tuple circumcenter_rows(py::object a_object, py::object b_object, py::object c_object) {
-    const Points a = to_points(a_object, "a"), b = to_points(b_object, "b"), c = to_points(c_object, "c");
-    std::size_t rows = 1;
-    bool any_rows = false;
-    for (const Points* p : {&a, &b, &c}) {
-        if (p->single) continue;
-        any_rows = true;
-        if (p->rows == 1) continue;
-        if (rows != 1 && p->rows != rows) throw py::value_error("a, b, c: different numbers of rows");
-        rows = p->rows;
-    }
+    const std::array<Points, 3> p{to_points(a_object, "a"), to_points(b_object, "b"),
+                                  to_points(c_object, "c")};
+    const std::array<const char*, 3> names{"a", "b", "c"};
+    const auto [rows, shaped] = broadcast(p, names);
     std::vector<Point2> centres(rows);
     std::vector<std::int8_t> status(rows);
     {
         py::gil_scoped_release release;
         const auto at = [](const Points& p, std::size_t i) { return p.data[p.rows == 1 ? 0 : i]; };
         for (std::size_t i = 0; i < rows; ++i) {
-            const Circumcenter r = circumcenter(at(a, i), at(b, i), at(c, i));
+            const Circumcenter r = circumcenter(at(p[0], i), at(p[1], i), at(p[2], i));
             centres[i] = r.point;
             status[i] = static_cast<std::int8_t>(r.status);
         }
     }
     py::array_t<double> out = to_numpy(std::move(centres));
     py::array_t<std::int8_t> st = to_numpy(std::move(status));
-    if (!any_rows) return py::make_tuple(out.attr("reshape")(2), st.attr("reshape")(py::tuple()));
+    if (!shaped) return py::make_tuple(out.attr("reshape")(2), st.attr("reshape")(py::tuple()));
     return py::make_tuple(out, st);
 }
 
