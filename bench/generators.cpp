@@ -138,6 +138,33 @@ std::array<Point2, N> circle_points(Rng& rng) {
 Quad circle3(Rng& rng) { return triple(circle_points<3>(rng)); }
 Quad circle4(Rng& rng) { return quad(circle_points<4>(rng)); }
 
+// compare_distance(centre, p, q) with p and q on the lattice circle: an exact tie. The
+// centre is the translation, scaled like the points (exact).
+Quad circle_distance(Rng& rng) {
+    const std::vector<Point2>& all = lattice_circle();
+    const auto last = static_cast<std::int64_t>(all.size()) - 1;
+    const Point2 p = all[static_cast<std::size_t>(integer(rng, 0, last))];
+    const Point2 q = all[static_cast<std::size_t>(integer(rng, 0, last))];
+    const double ox = static_cast<double>(integer(rng, -(1 << 24), 1 << 24));
+    const double oy = static_cast<double>(integer(rng, -(1 << 24), 1 << 24));
+    const int scale = static_cast<int>(integer(rng, -30, 0));
+    const auto place = [&](Point2 v) {
+        return Point2{std::ldexp(v.x + ox, scale), std::ldexp(v.y + oy, scale)};
+    };
+    return triple({place({0, 0}), place(p), place(q)});
+}
+
+// The same in uniform coordinates: q is p turned about the centre by a random angle, in
+// doubles, so the distances agree only up to rounding.
+Quad uniform_near_distance(Rng& rng) {
+    const Point2 c = uniform_point(rng), p = uniform_point(rng);
+    const double angle = unit(rng) * 6.283185307179586;
+    const double dx = p.x - c.x, dy = p.y - c.y;
+    const Point2 q{c.x + (dx * std::cos(angle) - dy * std::sin(angle)),
+                   c.y + (dx * std::sin(angle) + dy * std::cos(angle))};
+    return triple({c, p, q});
+}
+
 // ---- dyadic-slope collinear ----------------------------------------------------------
 // a = (ax, ay) integers below 2^30, direction (1, p / 2^q) with p odd below 2^10 and
 // q <= 10, points a + t (1, p / 2^q) for integers |t| <= 2^20: every coordinate needs at
@@ -245,15 +272,16 @@ Quad near4(Rng& rng) {
 
 const std::vector<Family>& families() {
     static const std::vector<Family> all{
-        {"uniform", "uniform in [0,1)^2", uniform3, uniform4},
+        {"uniform", "uniform in [0,1)^2", uniform3, uniform4, uniform3},
         {"uniform-near", "collinear / cocircular up to double rounding, then +-3 ulps",
-         uniform_near3, uniform_near4},
+         uniform_near3, uniform_near4, uniform_near_distance},
         {"scaled", "uniform times 2^k, k in [-1000, 1000] per query", scaled3, scaled4},
         {"grid", "integers in [-8, 8]^2", grid3, grid4},
         {"grid-near", "grid, last point +-3 ulps", near3<grid3>, near4<grid4>},
         {"circle", "exactly cocircular lattice points, translated and scaled by 2^-s",
-         circle3, circle4},
-        {"circle-near", "circle, last point +-3 ulps", near3<circle3>, near4<circle4>},
+         circle3, circle4, circle_distance},
+        {"circle-near", "circle, last point +-3 ulps", near3<circle3>, near4<circle4>,
+         near3<circle_distance>},
         {"collinear", "exactly collinear, dyadic slopes", collinear3, collinear4},
         {"collinear-near", "collinear, last point +-3 ulps", near3<collinear3>,
          near4<collinear4>},

@@ -23,12 +23,15 @@ struct Quad {
 
 using Rng = std::mt19937_64;
 
-/// One input family: a generator of orient2d triples and one of incircle quadruples.
+/// One input family: a generator of orient2d triples and one of incircle quadruples, and
+/// for the families with a natural distance tie, one of compare_distance(c, p, q) queries
+/// as (a, b, c) = (c, p, q) (null for the others).
 struct Family {
     std::string name;
     std::string description;
     Quad (*orient)(Rng&);
     Quad (*incircle)(Rng&);
+    Quad (*distance)(Rng&) = nullptr;
 };
 
 /// All families of the agreement table, in table order. The "-near" families take the

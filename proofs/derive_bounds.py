@@ -374,6 +374,65 @@ def main():
     g = (1 + e) ** 4 / (1 - e) ** 3
     claims.append(("circumcenter_margin", "min", max(margin_1, (g - 1) / (g + 1))))
 
+    # ---- incircle, double-word stage (bounds.md#incircle-double-word) ---------------------
+    # Hypotheses (adaptive.cpp's range test): every nonzero high part of a difference has
+    # magnitude in [dw_lo, dw_hi]; a difference is exact (Two-Diff) and normalized, so its
+    # exact value is 0 or in [(1 - e) dw_lo, (1 + e) dw_hi].
+    dw_lo, dw_hi = Q(2) ** -220, Q(2) ** 220
+    claims.append(("icc_dw_min", "min", dw_lo))
+    claims.append(("icc_dw_max", "max", dw_hi))
+    y_lo, y_hi = dw_lo * (1 - e), dw_hi * (1 + e)
+
+    def require_dw(ok, what):
+        if not ok:
+            sys.exit(f"incircle double-word stage: range condition fails: {what}")
+
+    # No overflow: lifts and crosses are at most 2 y_hi^2 (1 + theta), their products 4 y_hi^4,
+    # the determinant three of those; Dekker's split (Boldo) needs operands <= 2^995 and
+    # products <= 2^1021; the computed permanent is no larger than the determinant's bound.
+    lift_hi = 2 * y_hi ** 2 * (1 + e) ** 4
+    require_dw(lift_hi <= Q(2) ** 995 and 3 * lift_hi ** 2 * (1 + e) ** 6 <= Q(2) ** 1021,
+               "no overflow, Dekker's split applies")
+    # Underflow enters only through lemma DW's absolute terms u_low (low products) and u_tp
+    # (an inexact Two-Product: applied to every product, although only a degree-4 product
+    # can be small enough), against the least nonzero permanent of each product.
+    t2_min = y_lo ** 2                       # X Y: the lifts' squares and the crosses' products
+    t4_min = y_lo ** 4                       # lift x cross
+    th_1 = beta + (u_low + u_tp) / t2_min
+    th_2 = th_1 * (1 + alpha) + alpha        # lifts and crosses: add(mul, +-mul)
+    th_4 = (1 + beta) * (1 + th_2) ** 2 - 1 + (u_low + u_tp) / t4_min
+    th_s = th_4 * (1 + alpha) + alpha        # the first two terms
+    th_det = th_s * (1 + alpha) + alpha      # all three
+    # T <= kappa t: A <= (1 + e) lift.hi / (1 - th_2), |X| <= (1 + e) |X.hi|, and five
+    # roundings (R2; every nonzero intermediate of t is at least (1 - e)^8 y_lo^4, normal).
+    kappa_dw = (1 + e) ** 8 / (1 - th_2)
+    require_dw((1 - e) ** 8 * y_lo ** 4 * e ** 2 >= normal, "t and the bound are normal")
+    # Deciding: |det.hi| > fl(icc_dw t) >= icc_dw t / (1 + e) and |D~| >= (1 - e) |det.hi|.
+    claims.append(("icc_dw", "min", th_det * kappa_dw * (1 + e) / (1 - e)))
+
+    # ---- incircle_cosine, double-word stage (bounds.md#cosine-double-word) ---------------
+    # The same rules for L - R = ac2 bc2 u^2 - ad2 bd2 v^2 (degree 8), every nonzero high part
+    # of the eight differences in [cw_lo, cw_hi].
+    cw_lo, cw_hi = Q(2) ** -110, Q(2) ** 110
+    claims.append(("cos_dw_min", "min", cw_lo))
+    claims.append(("cos_dw_max", "max", cw_hi))
+    z_lo, z_hi = cw_lo * (1 - e), cw_hi * (1 + e)
+    z2 = 2 * z_hi ** 2 * (1 + e) ** 4               # lifts and |u|, |v|
+    require_dw(z2 ** 2 * (1 + e) ** 6 <= Q(2) ** 995 and z2 ** 4 * (1 + e) ** 12 <= Q(2) ** 1020,
+               "cosine: no overflow, Dekker's split applies")
+    c_2 = beta + (u_low + u_tp) / z_lo ** 2
+    c_2 = c_2 * (1 + alpha) + alpha                  # u, v and the four squared lengths
+    c_4 = (1 + beta) * (1 + c_2) ** 2 - 1 + (u_low + u_tp) / z_lo ** 4   # ac2 bc2, u u
+    c_8 = (1 + beta) * (1 + c_4) ** 2 - 1 + (u_low + u_tp) / z_lo ** 8   # L, R
+    c_diff = c_8 * (1 + alpha) + alpha
+    # T <= kappa t: two lifts, (1 + e) / (1 - c_2) each; T_u <= (1 + e)^2 times the exact sum
+    # of the high products, which is at most (1 + e)^2 tu, squared; and the roundings of
+    # tu * tu, the lifts' product, their product and the final sum (R2; every nonzero
+    # intermediate is at least (1 - e)^16 z_lo^8, normal): (1 + e)^(2 + 8 + 4).
+    kappa_c = (1 + e) ** 14 / (1 - c_2) ** 2
+    require_dw((1 - e) ** 16 * z_lo ** 8 * e ** 2 >= normal, "cosine: t and the bound are normal")
+    claims.append(("cos_dw", "min", c_diff * kappa_c * (1 + e) / (1 - e)))
+
     with open(output, "w") as f:
         f.write("# Proven bounds, written by proofs/derive_bounds.py from Gappa's output.\n")
         f.write("# A trailing if=CONDITION: proven only if that statement (bounds.md) holds.\n")

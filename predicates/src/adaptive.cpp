@@ -11,10 +11,13 @@
 
 #include "exidel/predicates/constants.hpp"
 #include "exidel/predicates/exact.hpp"
+#include "adaptive_unchecked.hpp"
+#include "double_word.hpp"
 #include "expansion.hpp"
 #include "formulas.hpp"
 #include "fp_environment.hpp"
 #include "fp_hygiene.hpp"
+#include "small_integers.hpp"
 
 namespace exidel {
 
@@ -179,9 +182,93 @@ int incircle_of_rounded_differences(double adx, double ady, double bdx, double b
     return detail::expansion_sum(ablen, abdet, clen, cdet, fin);
 }
 
+// ---- exact ties in small integers (small_integers.hpp) ----------------------------------
+
+/// The rounded differences as integers sharing one power of two, when every one is exact
+/// (its Two-Diff tail is zero) and all fit in small_bits bits.
+template <int N>
+bool exact_small_differences(const double (&minuend)[N], const double (&subtrahend)[N],
+                             const double (&difference)[N], std::int64_t (&out)[N]) {
+    for (int i = 0; i < N; ++i) {
+        if (detail::two_diff_tail(minuend[i], subtrahend[i], difference[i]) != 0) return false;
+    }
+    return detail::to_small_integers(difference, out);
+}
+
+[[gnu::noinline]] bool incircle_small_integers(Point2 a, Point2 b, Point2 c, Point2 d,
+                                               const IncircleDifferences& v, Sign& sign) {
+    std::int64_t n[6];
+    if (!exact_small_differences({a.x, a.y, b.x, b.y, c.x, c.y}, {d.x, d.y, d.x, d.y, d.x, d.y},
+                                 {v.adx, v.ady, v.bdx, v.bdy, v.cdx, v.cdy}, n)) {
+        return false;
+    }
+    sign = static_cast<Sign>(detail::incircle_small_sign(n));
+    return true;
+}
+
+// ---- incircle: the double-word stage ---------------------------------------------------
+// Between stage A and the expansions. The differences are exact double words (Two-Diff);
+// the determinant is evaluated from them in double-word arithmetic (double_word.hpp), with
+// an error of at most (36 + O(eps)) eps^2 T, T the permanent of the exact differences
+// (proofs/bounds.md#incircle-double-word). Rounding a cocircular configuration to doubles
+// leaves values of order eps T, so this decides nearly every query whose value is not
+// zero, at a fraction of the cost of stage B's 96-component expansion. It runs only when
+// every nonzero difference is in [icc_dw_min, icc_dw_max], the range the proof covers.
+
+using detail::dw::Word;
+
+template <bool Fma>
+[[gnu::always_inline]] inline bool incircle_double_word_eval(const Word (&w)[6], Sign& sign) {
+    using detail::dw::add, detail::dw::mul, detail::dw::neg;
+    const auto [adx, ady, bdx, bdy, cdx, cdy] = w;
+    const Word alift = add(mul<Fma>(adx, adx), mul<Fma>(ady, ady));
+    const Word blift = add(mul<Fma>(bdx, bdx), mul<Fma>(bdy, bdy));
+    const Word clift = add(mul<Fma>(cdx, cdx), mul<Fma>(cdy, cdy));
+    const Word bc = add(mul<Fma>(bdx, cdy), neg(mul<Fma>(cdx, bdy)));
+    const Word ca = add(mul<Fma>(cdx, ady), neg(mul<Fma>(adx, cdy)));
+    const Word ab = add(mul<Fma>(adx, bdy), neg(mul<Fma>(bdx, ady)));
+    const Word det = add(add(mul<Fma>(alift, bc), mul<Fma>(blift, ca)), mul<Fma>(clift, ab));
+    // An upper bound of T / kappa from the high parts (bounds.md: T <= kappa t).
+    const double t =
+        (alift.hi * (std::fabs(bdx.hi * cdy.hi) + std::fabs(cdx.hi * bdy.hi)) +
+         blift.hi * (std::fabs(cdx.hi * ady.hi) + std::fabs(adx.hi * cdy.hi))) +
+        clift.hi * (std::fabs(adx.hi * bdy.hi) + std::fabs(bdx.hi * ady.hi));
+    return filter_decides(det.hi, eb::icc_dw * t, sign);
+}
+
+#if (defined(__x86_64__) || defined(__i386__)) && defined(__GNUC__) && !defined(__FMA__)
+[[gnu::target("fma")]] bool incircle_double_word_fma(const Word (&w)[6], Sign& sign) {
+    return incircle_double_word_eval<true>(w, sign);
+}
+#endif
+
+/// True (and the sign) when the double-word stage decides.
+[[gnu::noinline]] bool incircle_double_word(Point2 a, Point2 b, Point2 c, Point2 d, Sign& sign) {
+    using detail::dw::two_sum;
+    const Word w[6] = {two_sum(a.x, -d.x), two_sum(a.y, -d.y), two_sum(b.x, -d.x),
+                       two_sum(b.y, -d.y), two_sum(c.x, -d.x), two_sum(c.y, -d.y)};
+    for (const Word& v : w) {
+        const double m = std::fabs(v.hi);
+        // Negated, so that an infinite difference (or NaN) leaves the stage too.
+        if (!(m <= eb::icc_dw_max) || (m != 0 && m < eb::icc_dw_min)) return false;
+    }
+#if defined(__FMA__) || defined(__ARM_FEATURE_FMA)
+    return incircle_double_word_eval<true>(w, sign);
+#else
+#if (defined(__x86_64__) || defined(__i386__)) && defined(__GNUC__)
+    if (detail::dw::use_fma()) return incircle_double_word_fma(w, sign);
+#endif
+    return incircle_double_word_eval<false>(w, sign);
+#endif
+}
+
 [[gnu::noinline]] Sign incircle_adapt(Point2 a, Point2 b, Point2 c, Point2 d,
                                       const IncircleDifferences& v, double permanent,
                                       AdaptiveStage& stage) {
+    stage = AdaptiveStage::small_integer;
+    if (Sign s; incircle_small_integers(a, b, c, d, v, s)) return s;
+    stage = AdaptiveStage::double_word;
+    if (Sign s; incircle_double_word(a, b, c, d, s)) return s;
     if (!expansion_safe({a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y}, 4, incircle_max_log)) {
         stage = AdaptiveStage::gmp;
         return GmpExactKernel::incircle(a, b, c, d);
@@ -292,6 +379,70 @@ Sign dot_sign_adapt(Point2 p, Point2 q, Point2 o, AdaptiveStage& stage) {
     return product_pair_adapt<true>({p.x, o.x, q.x, o.x, p.y, o.y, q.y, o.y}, sum_abs, stage);
 }
 
+// ---- incircle_cosine: the double-word stage --------------------------------------------
+// When the two dot products have opposite exact signs, the answer is the sign of
+// L - R = |a-c|^2 |b-c|^2 u^2 - |a-d|^2 |b-d|^2 v^2 (cosine.md). This evaluates it from
+// the exact differences in double-word arithmetic, with an error of at most
+// (71 + O(eps)) eps^2 T, T = |a-c|^2 |b-c|^2 T_u^2 + |a-d|^2 |b-d|^2 T_v^2 with T_u the
+// permanent of u (proofs/bounds.md#cosine-double-word), for differences in
+// [cos_dw_min, cos_dw_max]. Returns the sign of L - R, or nothing.
+
+template <bool Fma>
+[[gnu::always_inline]] inline bool cosine_double_word_eval(const Word (&w)[8], Sign& sign) {
+    using detail::dw::add, detail::dw::mul, detail::dw::neg;
+    const auto [adx, ady, bdx, bdy, acx, acy, bcx, bcy] = w;
+    const Word u = add(mul<Fma>(adx, bdx), mul<Fma>(ady, bdy));  // (a-d).(b-d)
+    const Word v = add(mul<Fma>(acx, bcx), mul<Fma>(acy, bcy));  // (a-c).(b-c)
+    const Word ad2 = add(mul<Fma>(adx, adx), mul<Fma>(ady, ady));
+    const Word bd2 = add(mul<Fma>(bdx, bdx), mul<Fma>(bdy, bdy));
+    const Word ac2 = add(mul<Fma>(acx, acx), mul<Fma>(acy, acy));
+    const Word bc2 = add(mul<Fma>(bcx, bcx), mul<Fma>(bcy, bcy));
+    const Word left = mul<Fma>(mul<Fma>(ac2, bc2), mul<Fma>(u, u));
+    const Word right = mul<Fma>(mul<Fma>(ad2, bd2), mul<Fma>(v, v));
+    const Word diff = add(left, neg(right));
+    // An upper bound of T / kappa from the high parts (bounds.md: T <= kappa t).
+    const double tu = std::fabs(adx.hi * bdx.hi) + std::fabs(ady.hi * bdy.hi);
+    const double tv = std::fabs(acx.hi * bcx.hi) + std::fabs(acy.hi * bcy.hi);
+    const double t = (ac2.hi * bc2.hi) * (tu * tu) + (ad2.hi * bd2.hi) * (tv * tv);
+    return filter_decides(diff.hi, eb::cos_dw * t, sign);
+}
+
+#if (defined(__x86_64__) || defined(__i386__)) && defined(__GNUC__) && !defined(__FMA__)
+[[gnu::target("fma")]] bool cosine_double_word_fma(const Word (&w)[8], Sign& sign) {
+    return cosine_double_word_eval<true>(w, sign);
+}
+#endif
+
+[[gnu::noinline]] bool cosine_double_word(Point2 a, Point2 b, Point2 c, Point2 d, Sign& sign) {
+    using detail::dw::two_sum;
+    const Word w[8] = {two_sum(a.x, -d.x), two_sum(a.y, -d.y), two_sum(b.x, -d.x),
+                       two_sum(b.y, -d.y), two_sum(a.x, -c.x), two_sum(a.y, -c.y),
+                       two_sum(b.x, -c.x), two_sum(b.y, -c.y)};
+    for (const Word& x : w) {
+        const double m = std::fabs(x.hi);
+        if (!(m <= eb::cos_dw_max) || (m != 0 && m < eb::cos_dw_min)) return false;
+    }
+#if defined(__FMA__) || defined(__ARM_FEATURE_FMA)
+    return cosine_double_word_eval<true>(w, sign);
+#else
+#if (defined(__x86_64__) || defined(__i386__)) && defined(__GNUC__)
+    if (detail::dw::use_fma()) return cosine_double_word_fma(w, sign);
+#endif
+    return cosine_double_word_eval<false>(w, sign);
+#endif
+}
+
+[[gnu::noinline]] bool cosine_small_integers(Point2 a, Point2 b, Point2 c, Point2 d, Sign& sign) {
+    const double minuend[8] = {a.x, a.y, b.x, b.y, a.x, a.y, b.x, b.y};
+    const double subtrahend[8] = {d.x, d.y, d.x, d.y, c.x, c.y, c.x, c.y};
+    double difference[8];
+    for (int i = 0; i < 8; ++i) difference[i] = minuend[i] - subtrahend[i];
+    std::int64_t n[8];
+    if (!exact_small_differences(minuend, subtrahend, difference, n)) return false;
+    sign = static_cast<Sign>(detail::cosine_small_sign(n));
+    return true;
+}
+
 [[gnu::noinline]] Sign incircle_cosine_adapt(Point2 a, Point2 b, Point2 c, Point2 d,
                                              AdaptiveStage& stage) {
     // The signs of the two dot products, exactly, by the orient2d-shaped stages (degree 2):
@@ -300,10 +451,35 @@ Sign dot_sign_adapt(Point2 p, Point2 q, Point2 o, AdaptiveStage& stage) {
         AdaptiveStage stage_u = AdaptiveStage::filter, stage_v = AdaptiveStage::filter;
         const Sign su = dot_sign_adapt(a, b, d, stage_u);
         const Sign sv = dot_sign_adapt(a, b, c, stage_v);
-        if (su == sv) {
-            stage = std::max({stage_u, stage_v, AdaptiveStage::stage_b});
-            return -su;
+        stage = std::max({stage_u, stage_v, AdaptiveStage::stage_b});
+        if (su == sv) return -su;
+        // One dot product zero: E is the other term, |a-d||b-d| v (u = 0) or |a-c||b-c| u
+        // (v = 0), whose length factor is zero only when two points coincide.
+        const auto differs = [](Point2 p, Point2 q) { return p.x != q.x || p.y != q.y; };
+        if (su == Sign::zero) return differs(a, d) && differs(b, d) ? -sv : Sign::zero;
+        if (sv == Sign::zero) return differs(a, c) && differs(b, c) ? -su : Sign::zero;
+
+        // Opposite signs. When c and d are strictly on opposite sides of ab (the paper's
+        // precondition, the only case a triangulation asks), the cosine test is the in-circle
+        // test: -sign(E) = orient2d(a, b, c) * incircle(a, b, c, d) (proofs/cosine.md,
+        // section 1), and incircle's stages resolve near-ties the degree-8 form leaves at
+        // eps^2 (near lines, E is second order in the deviation). `stage` is incircle's.
+        AdaptiveStage orient_stage{};
+        const Sign oc = orient2d_impl(a, b, c, &orient_stage);
+        if (oc != Sign::zero && orient2d_impl(a, b, d, &orient_stage) == -oc) {
+            return static_cast<Sign>(to_int(oc) * to_int(incircle_impl(a, b, c, d, &stage)));
         }
+
+        // Otherwise the sign of L - R decides: -su if L > R, -sv if L < R, and a tie means
+        // |X| = |Y| with opposite signs, E = 0 (only the integers can decide a tie).
+        Sign s = Sign::zero;
+        stage = AdaptiveStage::small_integer;
+        bool decided = cosine_small_integers(a, b, c, d, s);
+        if (!decided) {
+            stage = AdaptiveStage::double_word;
+            decided = cosine_double_word(a, b, c, d, s);
+        }
+        if (decided) return s == Sign::positive ? -su : s == Sign::negative ? -sv : Sign::zero;
     }
     // The degree-8 comparison, exactly. Measured on near-cocircular queries (bench/,
     // proofs/README.md): Boost's cpp_int, whose small values live inline, evaluates it about
@@ -443,6 +619,30 @@ inline Sign compare_distance_impl(Point2 c, Point2 p, Point2 q, AdaptiveStage* s
 }  // namespace
 
 // ---- The kernel -------------------------------------------------------------------------
+
+namespace detail {
+
+Sign orient2d_unchecked(Point2 a, Point2 b, Point2 c) {
+    AdaptiveStage stage;
+    return orient2d_impl(a, b, c, &stage);
+}
+
+Sign incircle_unchecked(Point2 a, Point2 b, Point2 c, Point2 d) {
+    AdaptiveStage stage;
+    return incircle_impl(a, b, c, d, &stage);
+}
+
+Sign incircle_cosine_unchecked(Point2 a, Point2 b, Point2 c, Point2 d) {
+    AdaptiveStage stage;
+    return incircle_cosine_impl(a, b, c, d, &stage);
+}
+
+Sign compare_distance_unchecked(Point2 c, Point2 p, Point2 q) {
+    AdaptiveStage stage;
+    return compare_distance_impl(c, p, q, &stage);
+}
+
+}  // namespace detail
 
 Sign orient2d_staged(Point2 a, Point2 b, Point2 c, AdaptiveStage& stage) {
     return detail::in_standard_environment<orient2d_impl>(a, b, c, &stage);

@@ -16,7 +16,7 @@
 #include <optional>
 
 #include "binary64.hpp"
-#include "construct_dispatch.hpp"
+#include "double_word.hpp"
 #include "exidel/predicates/constants.hpp"
 #include "fp_hygiene.hpp"
 
@@ -59,65 +59,13 @@ Circumcenter classify(Point2 p) noexcept {
             CircumcenterStage::exact};
 }
 
-// ---- double words -------------------------------------------------------------------------
-// Double-word arithmetic: a value is hi + lo with |lo| <= eps |hi| (lo is hi's rounding
-// error). Two-Sum and Two-Product are exact; the sum and product below err by at most
-// (3 + O(eps)) eps^2 (|x| + |y|) and (8 + O(eps)) eps^2 |x| |y| (proofs/bounds.md#circumcenter,
-// lemma DW). They are the classical "sloppy" sum and the product of Joldes, Muller and
-// Popescu 2017, "Tight and rigorous error bounds for basic building blocks of double-word
-// arithmetic", ACM TOMS 44(2): the sum has no bound relative to its result, which is why
-// the proof bounds every error against the operands' magnitudes (permanents) instead.
+// ---- double words (double_word.hpp) --------------------------------------------------------
 
-struct Word {
-    double hi;
-    double lo;
-};
-
-Word two_sum(double a, double b) noexcept {
-    const double s = a + b;
-    const double bv = s - a;
-    return {s, (a - (s - bv)) + (b - bv)};
-}
-
-/// a + b when a is zero or |a| >= |b| (Dekker's Fast-Two-Sum): exact.
-Word fast_two_sum(double a, double b) noexcept {
-    const double s = a + b;
-    return {s, b - (s - a)};
-}
-
-/// a * b exactly (no under- or overflow). With a fused multiply-add the error term is one
-/// instruction (Fma); without one, Dekker's split, exact because exidel's translation
-/// units are compiled with -ffp-contract=off. (On the x86-64 baseline std::fma is a
-/// library call costing more than the split, so the FMA version is compiled separately
-/// for processors that have one: double_word() below.)
-template <bool Fma>
-[[gnu::always_inline]] inline Word two_product(double a, double b) noexcept {
-    const double p = a * b;
-    if constexpr (Fma) {
-        return {p, __builtin_fma(a, b, -p)};
-    } else {
-        constexpr double splitter = 134217729.0;  // 2^27 + 1
-        const double ca = splitter * a, cb = splitter * b;
-        const double ah = ca - (ca - a), bh = cb - (cb - b);
-        const double al = a - ah, bl = b - bh;
-        return {p, ((ah * bh - p) + ah * bl + al * bh) + al * bl};
-    }
-}
-
-Word add(Word x, Word y) noexcept {
-    const Word s = two_sum(x.hi, y.hi);
-    const double v = s.lo + (x.lo + y.lo);
-    return two_sum(s.hi, v);
-}
-
-Word neg(Word x) noexcept { return {-x.hi, -x.lo}; }
-
-template <bool Fma>
-[[gnu::always_inline]] inline Word mul(Word x, Word y) noexcept {
-    const Word p = two_product<Fma>(x.hi, y.hi);
-    const double c = x.hi * y.lo + x.lo * y.hi;
-    return fast_two_sum(p.hi, p.lo + c);
-}
+using detail::dw::add;
+using detail::dw::mul;
+using detail::dw::neg;
+using detail::dw::two_sum;
+using detail::dw::Word;
 
 /// Half the smaller gap from s to a neighbouring double (below a power of two the gap is
 /// half the ulp); 0 when s is too small for stage 1 to reason about its neighbours.
@@ -272,23 +220,6 @@ template <bool Fma>
 }
 #endif
 
-}  // namespace
-
-namespace detail {
-bool& circumcenter_use_fma() noexcept {
-#if defined(__FMA__) || defined(__ARM_FEATURE_FMA)
-    static bool use = true;
-#elif (defined(__x86_64__) || defined(__i386__)) && defined(__GNUC__)
-    static bool use = (__builtin_cpu_init(), __builtin_cpu_supports("fma") != 0);
-#else
-    static bool use = false;
-#endif
-    return use;
-}
-}  // namespace detail
-
-namespace {
-
 /// Stage 2 with the processor's fused multiply-add when it has one (the result is the
 /// same: both Two-Products are exact).
 std::optional<Point2> double_word(const Differences& t) noexcept {
@@ -296,7 +227,7 @@ std::optional<Point2> double_word(const Differences& t) noexcept {
     return double_word_stage<true>(t);
 #else
 #if (defined(__x86_64__) || defined(__i386__)) && defined(__GNUC__)
-    if (detail::circumcenter_use_fma()) return double_word_stage_fma(t);
+    if (detail::dw::use_fma()) return double_word_stage_fma(t);
 #endif
     return double_word_stage<false>(t);
 #endif

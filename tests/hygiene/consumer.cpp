@@ -3,8 +3,9 @@
 // -O3 -march=native -ffp-contract=fast, and with -ffast-math (compiled and linked, so the
 // process starts with flush-to-zero and denormals-are-zero set).
 //
-//   exidel-hygiene-<flavour>                 AdaptiveKernel must give the exact sign on every
-//                                            near-degenerate query; exit code 1 otherwise
+//   exidel-hygiene-<flavour>                 AdaptiveKernel and the batched predicates must
+//                                            give the exact sign on every near-degenerate
+//                                            query; exit code 1 otherwise
 //   exidel-hygiene-<flavour> --double-signs  fingerprints of the plain kernels' answers, which
 //                                            tests/hygiene/same_output.cmake compares across
 //                                            the three builds: compiled in the library, they
@@ -33,7 +34,8 @@ int check_adaptive(const std::vector<QueryFamily>& families) {
         const Signs exact = in_default_environment([&] { return evaluate(GmpExactKernel{}, family); });
         const Signs adaptive = evaluate(AdaptiveKernel{}, family);
         const Signs plain = evaluate(DoubleKernel{}, family);
-        const std::size_t bad = count_mismatches("adaptive", family, adaptive, exact);
+        const std::size_t bad = count_mismatches("adaptive", family, adaptive, exact) +
+                                count_mismatches("batch", family, evaluate_batch(family), exact);
         total_bad += bad;
         const std::size_t queries = family.orient2d.size() + 2 * family.incircle.size();
         // The plain kernel is expected to be wrong here: the count is information, and
@@ -44,7 +46,7 @@ int check_adaptive(const std::vector<QueryFamily>& families) {
             plain_wrong += plain.incircle[i] != exact.incircle[i];
             plain_wrong += plain.incircle_cosine[i] != exact.incircle_cosine[i];
         }
-        std::printf("%-10s %7zu queries: adaptive wrong %zu, double wrong %zu\n",
+        std::printf("%-10s %7zu queries: adaptive and batch wrong %zu, double wrong %zu\n",
                     family.name.c_str(), queries, bad, plain_wrong);
     }
     return total_bad == 0 ? 0 : 1;

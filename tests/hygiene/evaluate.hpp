@@ -31,6 +31,24 @@ Signs evaluate(const Kernel& kernel, const QueryFamily& family) {
     return s;
 }
 
+/// The batched predicates (batch.hpp) over the same queries.
+inline Signs evaluate_batch(const QueryFamily& family) {
+    std::vector<Point2> a, b, c, d;
+    for (const Orient2dQuery& q : family.orient2d) a.push_back(q.a), b.push_back(q.b), c.push_back(q.c);
+    Signs s;
+    s.orient2d.resize(a.size());
+    batch::orient2d(a, b, c, s.orient2d);
+    a.clear(), b.clear(), c.clear();
+    for (const IncircleQuery& q : family.incircle) {
+        a.push_back(q.a), b.push_back(q.b), c.push_back(q.c), d.push_back(q.d);
+    }
+    s.incircle.resize(a.size());
+    s.incircle_cosine.resize(a.size());
+    batch::incircle(a, b, c, d, s.incircle);
+    batch::incircle_cosine(a, b, c, d, s.incircle_cosine);
+    return s;
+}
+
 inline void print_point(Point2 p) { std::printf("(%a, %a)", p.x, p.y); }
 
 /// Counts the queries where `got` differs from `want`, printing the first few with their

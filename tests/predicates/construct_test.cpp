@@ -11,7 +11,7 @@
 #include <rapidcheck.h>
 
 #include "circumcenter_oracle.hpp"
-#include "construct_dispatch.hpp"
+#include "double_word.hpp"
 #include "exidel/predicates/construct.hpp"
 #include "exidel/testing/all.hpp"
 
@@ -57,7 +57,7 @@ TEST(Circumcenter, IsCorrectlyRoundedOnEveryFamily) {
 // The double-word stage has two exact Two-Products: the fused multiply-add (used when
 // the processor has one) and Dekker's split. Both must give the same, correct, values.
 TEST(Circumcenter, DekkersTwoProductIsCorrectlyRoundedToo) {
-    bool& use_fma = detail::circumcenter_use_fma();
+    bool& use_fma = detail::dw::use_fma();
     const bool saved = use_fma;
     use_fma = false;
     check_every_family("circumcenter (Dekker's split)", circumcenter);

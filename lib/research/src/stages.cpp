@@ -43,7 +43,7 @@ namespace {
 constexpr std::uint64_t stages_study_id = 4;
 constexpr std::size_t queries_per_chunk = 1000;
 
-constexpr const char* stage_names[adaptive_stage_count] = {"filter", "stage_b", "stage_c", "exact", "gmp"};
+constexpr const char* stage_names[adaptive_stage_count] = {"filter", "small_integer", "double_word", "stage_b", "stage_c", "exact", "gmp"};
 constexpr const char* contexts[] = {"stream", "triangulation/determinant", "triangulation/cosine",
                                      "triangulation/radial"};
 constexpr std::size_t context_count = std::size(contexts);
@@ -272,7 +272,10 @@ StagesStudy run_stages_study(const StagesOptions& options, const RunOptions& run
     study.report = Report("Adaptive kernel: which stage decides");
     study.report.paragraph(
         "Fraction of calls decided by each stage of the adaptive kernel (filter: the "
-        "floating-point filter; stage_b: exact value of the rounded differences, or for "
+        "floating-point filter; small_integer: exact differences within 30 bits of each other, "
+        "evaluated in 64/128/256-bit integers (incircle, and the cosine form's final comparison); "
+        "double_word: the same value from the exact differences in double-word arithmetic with "
+        "a proven bound; stage_b: exact value of the rounded differences, or for "
         "incircle_cosine the exact signs of the two dot products, and for compare_distance only "
         "when its differences were exact, e.g. exact ties on grids; stage_c: first-order tail "
         "correction; exact: expansion arithmetic / cpp_int; gmp: magnitudes outside the "

@@ -21,6 +21,12 @@ namespace exidel {
 
 /// Which stage of the adaptive kernel decided a call (for the `stages` study):
 ///   filter   the floating-point filter (stage A);
+///   small_integer  incircle and incircle_cosine: every difference exact and all within 30
+///            bits of each other; exact 64/128/256-bit integer arithmetic (exact ties on
+///            lattices end here);
+///   double_word  incircle and incircle_cosine: the value from the exact differences in
+///            double-word arithmetic, with a proven bound (proofs/bounds.md#incircle-double-
+///            word, #cosine-double-word);
 ///   stage_b  the exact value of the rounded differences (Shewchuk's stage B); for
 ///            incircle_cosine, the exact signs of the two dot products; for
 ///            compare_distance, only when the differences were exact (exact ties on
@@ -29,8 +35,16 @@ namespace exidel {
 ///   exact    exact arithmetic inside the range where expansions are error-free (for the
 ///            degree-8 comparison of incircle_cosine: cpp_int integers, measured cheaper);
 ///   gmp      magnitudes outside that range: exact GMP integers.
-enum class AdaptiveStage : int { filter = 0, stage_b = 1, stage_c = 2, exact = 3, gmp = 4 };
-inline constexpr int adaptive_stage_count = 5;
+enum class AdaptiveStage : int {
+    filter = 0,
+    small_integer = 1,
+    double_word = 2,
+    stage_b = 3,
+    stage_c = 4,
+    exact = 5,
+    gmp = 6,
+};
+inline constexpr int adaptive_stage_count = 7;
 
 struct AdaptiveKernel {
     static constexpr bool is_exact = true;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "exidel/predicates/adaptive.hpp"
+#include "exidel/predicates/batch.hpp"
 #include "exidel/predicates/construct.hpp"
 #include "exidel/predicates/exact.hpp"
 #include "exidel/predicates/floating.hpp"

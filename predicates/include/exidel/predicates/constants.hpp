@@ -40,6 +40,17 @@ inline constexpr double icc_a = (10.0 + 112.0 * epsilon) * epsilon;
 inline constexpr double icc_b = (4.0 + 64.0 * epsilon) * epsilon;
 inline constexpr double icc_c = (44.0 + 576.0 * epsilon) * epsilon * epsilon;
 
+// ---- incircle, double-word stage -------------------------------------------------------
+// After stage A: the determinant of the exact differences (Two-Diff) in double-word
+// arithmetic (adaptive.cpp). With t the permanent computed from the high parts, the error
+// is at most (36 + O(eps)) eps^2 T and T <= (1 + O(eps)) t, so |det.hi| > fl(icc_dw * t)
+// certifies the sign (proofs/bounds.md#incircle-double-word). A double (3 * 2^-102).
+inline constexpr double icc_dw = 48.0 * epsilon * epsilon;
+/// Used only when every nonzero |difference| is in [icc_dw_min, icc_dw_max]: above, a
+/// product could overflow; below, underflow could add errors the bound does not cover.
+inline constexpr double icc_dw_min = 0x1p-220;
+inline constexpr double icc_dw_max = 0x1p220;
+
 // ---- incircle, semi-static filter ------------------------------------------------------
 // Tried before Shewchuk's stage A: with M the largest |rounded difference| (x - dx, ...),
 // every one of the determinant's 12 degree-4 monomials is at most M^4, so one bound
@@ -104,6 +115,17 @@ inline constexpr double cos_max_dot_rel = 0.25;
 /// The squared comparison is tried only when every factor and partial product is at least
 /// this large (so none is subnormal) and finite.
 inline constexpr double cos_min_factor = 0x1p-1000;
+
+// ---- incircle_cosine: the double-word stage ---------------------------------------------
+// When the dot products u, v have opposite exact signs, L - R (above) is evaluated from the
+// exact differences in double-word arithmetic (adaptive.cpp): with t computed from the high
+// parts, |diff.hi| > fl(cos_dw * t) certifies the sign of L - R
+// (proofs/bounds.md#cosine-double-word proves (71 + O(eps)) eps^2). A double (3 * 2^-101).
+inline constexpr double cos_dw = 96.0 * epsilon * epsilon;
+/// Every nonzero |difference| in [cos_dw_min, cos_dw_max]: degree 8 needs a narrower range
+/// than incircle's degree 4 for the same margins against overflow and underflow.
+inline constexpr double cos_dw_min = 0x1p-110;
+inline constexpr double cos_dw_max = 0x1p110;
 
 // ---- the circumcentre construction (construct.hpp) --------------------------------------
 // Stage 2 works in double-word arithmetic (a value is an unevaluated sum hi + lo of two

@@ -1,0 +1,112 @@
+// exidel (private): exact ties in fixed-width integers.
+//
+// No filter can decide an exact tie (a value of exactly zero: lattice circles, grids,
+// exactly collinear points); the expansions can, at the price of their longest schedule.
+// When the differences a predicate starts from are exact doubles whose bits all fit in a
+// window of `small_bits` bits (common on lattices and grids: every difference is then an
+// integer multiple of one power of two, 2^g, and below 2^(g + small_bits)), the
+// predicate's polynomial in the integers d / 2^g is evaluated exactly in 64- and 128-bit
+// integer arithmetic, and its sign is the predicate's (the polynomials are homogeneous,
+// so scaling every difference by 2^-g scales the value by a positive power of two).
+//
+// Ranges (every bound strict, |d| < 2^30 for the integers):
+//   incircle: lifts dx^2 + dy^2 < 2^61, crosses |p q - r s| < 2^61, each lift x cross
+//   < 2^122, the sum of three < 2^124 < 2^127: signed 128-bit;
+//   incircle_cosine: squared lengths and |u|, |v| < 2^61, ac2 bc2 and u^2 < 2^122 (unsigned
+//   128-bit), L = ac2 bc2 u^2 < 2^244: an unsigned 256-bit product compared exactly.
+// The static_asserts in the code check the first of these; proofs/bounds.md#small-integers
+// has the argument.
+#pragma once
+
+#include <bit>
+#include <climits>
+#include <cstdint>
+
+#include "binary64.hpp"
+
+namespace exidel::detail {
+
+inline constexpr int small_bits = 30;
+
+// GCC's and Clang's 128-bit integers (__extension__: not ISO C++, so -Wpedantic would warn).
+__extension__ typedef __int128 i128;
+__extension__ typedef unsigned __int128 u128;
+
+/// Converts n exact differences to integers d / 2^g sharing the least exponent g, when
+/// every one is below 2^(g + small_bits); false otherwise (or if any is not finite).
+template <int N>
+bool to_small_integers(const double (&v)[N], std::int64_t (&out)[N]) noexcept {
+    int low = INT_MAX, high = INT_MIN;
+    Binary64 bits[N];
+    for (int i = 0; i < N; ++i) {
+        bits[i] = decode(v[i]);
+        if (bits[i].biased_exponent == 2047) return false;
+        if (bits[i].significand == 0) continue;
+        const int tz = std::countr_zero(bits[i].significand);
+        const int top = bits[i].exponent + std::bit_width(bits[i].significand);  // |v| < 2^top
+        low = low < bits[i].exponent + tz ? low : bits[i].exponent + tz;
+        high = high > top ? high : top;
+    }
+    if (low == INT_MAX) {  // all zero
+        for (auto& o : out) o = 0;
+        return true;
+    }
+    if (high - low > small_bits) return false;
+    for (int i = 0; i < N; ++i) {
+        // significand * 2^(exponent - low): a shift left by at most small_bits, exact.
+        const std::int64_t m = bits[i].signed_significand();
+        const int shift = bits[i].exponent - low;
+        out[i] = shift >= 0 ? m * (std::int64_t{1} << shift) : m / (std::int64_t{1} << -shift);
+    }
+    return true;
+}
+
+/// The incircle determinant of integer differences below 2^small_bits, exactly.
+inline int incircle_small_sign(const std::int64_t (&d)[6]) noexcept {
+    static_assert(2 * small_bits + 1 <= 62, "a lift or a cross fits in 63 bits");
+    static_assert(2 * (2 * small_bits + 1) + 2 <= 127, "three lift x cross products fit");
+    const auto [adx, ady, bdx, bdy, cdx, cdy] = d;
+    const std::int64_t alift = adx * adx + ady * ady, blift = bdx * bdx + bdy * bdy,
+                       clift = cdx * cdx + cdy * cdy;
+    const std::int64_t bc = bdx * cdy - cdx * bdy, ca = cdx * ady - adx * cdy,
+                       ab = adx * bdy - bdx * ady;
+    const i128 det = i128{alift} * bc + i128{blift} * ca + i128{clift} * ab;
+    return (det > 0) - (det < 0);
+}
+
+/// An unsigned 256-bit value as two 128-bit halves, for comparing products exactly.
+struct U256 {
+    u128 hi, lo;
+    friend bool operator<(const U256& x, const U256& y) noexcept {
+        return x.hi != y.hi ? x.hi < y.hi : x.lo < y.lo;
+    }
+};
+
+/// x * y exactly, from four 64 x 64 -> 128-bit products.
+inline U256 mul_wide(u128 x, u128 y) noexcept {
+    const auto lo64 = [](u128 v) { return static_cast<u128>(static_cast<std::uint64_t>(v)); };
+    const u128 x0 = lo64(x), x1 = x >> 64, y0 = lo64(y), y1 = y >> 64;
+    const u128 p00 = x0 * y0, p01 = x0 * y1, p10 = x1 * y0, p11 = x1 * y1;
+    // Middle column: the high half of p00 plus the low halves of p01 and p10 (< 3 * 2^64).
+    const u128 middle = (p00 >> 64) + lo64(p01) + lo64(p10);
+    return {p11 + (p01 >> 64) + (p10 >> 64) + (middle >> 64), (middle << 64) | lo64(p00)};
+}
+
+/// For incircle_cosine with dot products of opposite nonzero signs: the sign of
+/// L - R = |a-c|^2 |b-c|^2 u^2 - |a-d|^2 |b-d|^2 v^2 from integer differences below
+/// 2^small_bits, exactly (d = adx, ady, bdx, bdy, acx, acy, bcx, bcy).
+inline int cosine_small_sign(const std::int64_t (&d)[8]) noexcept {
+    static_assert(2 * small_bits + 1 <= 63, "a squared length or |u| fits in 64 bits");
+    const auto [adx, ady, bdx, bdy, acx, acy, bcx, bcy] = d;
+    const auto magnitude = [](std::int64_t v) { return static_cast<std::uint64_t>(v < 0 ? -v : v); };
+    const auto ad2 = static_cast<std::uint64_t>(adx * adx + ady * ady);
+    const auto bd2 = static_cast<std::uint64_t>(bdx * bdx + bdy * bdy);
+    const auto ac2 = static_cast<std::uint64_t>(acx * acx + acy * acy);
+    const auto bc2 = static_cast<std::uint64_t>(bcx * bcx + bcy * bcy);
+    const std::uint64_t u = magnitude(adx * bdx + ady * bdy), v = magnitude(acx * bcx + acy * bcy);
+    const U256 left = mul_wide(u128{ac2} * bc2, u128{u} * u);
+    const U256 right = mul_wide(u128{ad2} * bd2, u128{v} * v);
+    return (right < left) - (left < right);
+}
+
+}  // namespace exidel::detail

@@ -1,0 +1,243 @@
+// The adaptive kernel's stages between the filter and the expansions, tested on their own:
+// every answer is CGAL's, with either exact Two-Product (fused multiply-add or Dekker's
+// split), at the edges of the range each stage is proven for, and on the inputs a stage
+// must not decide (exact ties whose double-word evaluation rounds).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <rapidcheck.h>
+
+#include "cgal_oracle.hpp"
+#include "double_word.hpp"
+#include "small_integers.hpp"
+#include "exidel/predicates/adaptive.hpp"
+#include "exidel/predicates/constants.hpp"
+#include "exidel/testing/all.hpp"
+
+namespace exidel::test {
+namespace {
+
+/// Runs `body` with the double-word stages' Two-Product set to `fma`, restoring it after.
+template <class Body>
+void with_two_product(bool fma, Body body) {
+    bool& use = detail::dw::use_fma();
+    const bool saved = use;
+    use = fma;
+    body();
+    use = saved;
+}
+
+/// q scaled by a power of two so that its largest coordinate is in [2^k, 2^(k+1)) (exact
+/// for the k used here: the families' coordinates are far from the overflow threshold and
+/// scaling up loses nothing; scaling down by at most 2^-1100 can, so only up is used
+/// where the query is tiny).
+testing::Query4 rescaled(const testing::Query4& q, int k) {
+    double m = 0;
+    for (const Point2& p : q) m = std::max({m, std::fabs(p.x), std::fabs(p.y)});
+    if (m == 0) return q;
+    const int shift = k - std::ilogb(m);
+    testing::Query4 r;
+    for (std::size_t i = 0; i < 4; ++i) r[i] = {std::ldexp(q[i].x, shift), std::ldexp(q[i].y, shift)};
+    return r;
+}
+
+using StageCounts = std::array<std::uint64_t, adaptive_stage_count>;
+
+std::uint64_t count(const StageCounts& c, AdaptiveStage s) { return c[static_cast<std::size_t>(s)]; }
+
+/// Runs `check(query, counts)` on every family's queries as generated, where the families
+/// spread them over the whole exponent range, and rescaled to [1, 2) (where a near-
+/// degenerate query is in the double-word stages' range); only the rescaled queries of the
+/// near-degenerate families are counted.
+template <class Check>
+StageCounts on_every_family(const std::string& what, bool cosine_arrangement, Check check) {
+    StageCounts near{};
+    for (const testing::FamilyInfo& f : testing::all_families()) {
+        const bool ok = rc::check(what + " on " + std::string(f.name), [&] {
+            const bool arranged = cosine_arrangement && *rc::gen::arbitrary<bool>();
+            const testing::Query4 q =
+                arranged ? *testing::gen_cosine_query(f.family) : *testing::gen_query4(f.family);
+            StageCounts ignored{};
+            check(q, ignored);
+            check(rescaled(q, 0), f.near_degenerate ? near : ignored);
+        });
+        EXPECT_TRUE(ok) << what << " failed on family " << f.name;
+    }
+    return near;
+}
+
+/// For every family: staged incircle == CGAL. Fails if the double-word stage decides fewer
+/// near-degenerate queries than the expansions after it (the property would then say
+/// little about it).
+void incircle_matches_cgal_on_every_family(const std::string& what) {
+    const StageCounts near = on_every_family(what, false, [](const testing::Query4& q, StageCounts& c) {
+        const auto [a, b, c4, d] = q;
+        AdaptiveStage stage{};
+        RC_ASSERT(incircle_staged(a, b, c4, d, stage) == cgal_incircle(a, b, c4, d));
+        ++c[static_cast<std::size_t>(stage)];
+    });
+    const auto dw = count(near, AdaptiveStage::double_word);
+    const auto later = count(near, AdaptiveStage::stage_b) + count(near, AdaptiveStage::stage_c) +
+                       count(near, AdaptiveStage::exact);
+    EXPECT_GT(dw, later) << "the double-word stage decided fewer near-degenerate queries than "
+                            "the expansion stages after it";
+}
+
+TEST(IncircleDoubleWord, MatchesCgalOnEveryFamilyWithFusedMultiplyAdd) {
+    with_two_product(true, [] { incircle_matches_cgal_on_every_family("incircle (fma)"); });
+}
+
+TEST(IncircleDoubleWord, MatchesCgalOnEveryFamilyWithDekkersSplit) {
+    with_two_product(false, [] { incircle_matches_cgal_on_every_family("incircle (Dekker)"); });
+}
+
+/// The same for incircle_cosine, against the independent exact evaluation of the cosine
+/// expression, on queries arranged for the cosine form (c and d on opposite sides of ab
+/// where the family allows it) and as generated.
+void cosine_matches_oracle_on_every_family(const std::string& what) {
+    // Without the precondition (c and d not strictly on opposite sides of ab) the kernel
+    // cannot hand the query to incircle; these count the cosine form's own stages.
+    StageCounts without_precondition{};
+    const StageCounts near = on_every_family(what, true, [&](const testing::Query4& q, StageCounts& c) {
+        const auto [a, b, c4, d] = q;
+        AdaptiveStage stage{};
+        RC_ASSERT(incircle_cosine_staged(a, b, c4, d, stage) == independent_cosine_sign(a, b, c4, d));
+        ++c[static_cast<std::size_t>(stage)];
+        if (!cgal_cosine_precondition(a, b, c4, d)) ++without_precondition[static_cast<std::size_t>(stage)];
+    });
+    EXPECT_GT(count(without_precondition, AdaptiveStage::double_word), 0u)
+        << "the cosine form's own double-word stage decided nothing";
+    std::cout << what << ", near-degenerate families rescaled, calls per stage:";
+    for (const std::uint64_t n : near) std::cout << " " << n;
+    std::cout << "\n";
+    EXPECT_GT(count(near, AdaptiveStage::double_word), count(near, AdaptiveStage::exact))
+        << "the double-word stage decided fewer near-degenerate queries than the exact stage";
+}
+
+TEST(CosineDoubleWord, MatchesTheOracleOnEveryFamilyWithFusedMultiplyAdd) {
+    with_two_product(true, [] { cosine_matches_oracle_on_every_family("cosine (fma)"); });
+}
+
+TEST(CosineDoubleWord, MatchesTheOracleOnEveryFamilyWithDekkersSplit) {
+    with_two_product(false, [] { cosine_matches_oracle_on_every_family("cosine (Dekker)"); });
+}
+
+// Near-cocircular queries scaled so that their differences straddle the stage's range
+// limits: just inside, the stage may decide; just outside, it must leave the query to
+// stage B or GMP. Either way the sign is CGAL's.
+TEST(IncircleDoubleWord, IsExactAtTheEdgesOfItsRange) {
+    EXPECT_TRUE(rc::check("incircle near the double-word range limits", [] {
+        const auto q = *testing::gen_query4(testing::Family::near_rounded_circle);
+        const int edge = *rc::gen::element(-220, 220);
+        const auto s = rescaled(q, edge + *rc::gen::inRange(-3, 4));
+        AdaptiveStage stage{};
+        RC_ASSERT(incircle_staged(s[0], s[1], s[2], s[3], stage) ==
+                  cgal_incircle(s[0], s[1], s[2], s[3]));
+    }));
+}
+
+// Exact ties on circles of large integer radius: the squares need more than 53 bits, so
+// the double-word lifts round and the computed determinant need not be zero. The bound
+// must keep the stage from deciding (a zero bound would decide some of these wrongly);
+// the same for the cosine form's L - R.
+TEST(IncircleDoubleWord, NeverDecidesAnExactTieWhoseEvaluationRounds) {
+    int rounded = 0;
+    const bool ok = rc::check("exact ties with wide integer coordinates", [&] {
+        // Pythagorean triples from (m, n): (m^2 - n^2, 2 m n), radius m^2 + n^2 < 2^51.
+        const auto m = *rc::gen::inRange<std::int64_t>(1 << 20, 1 << 25);
+        const auto n = *rc::gen::inRange<std::int64_t>(1, m);
+        const double x = static_cast<double>(m * m - n * n), y = static_cast<double>(2 * m * n);
+        const double cx = static_cast<double>(*rc::gen::inRange<std::int64_t>(-(1 << 20), 1 << 20));
+        const double cy = static_cast<double>(*rc::gen::inRange<std::int64_t>(-(1 << 20), 1 << 20));
+        const std::array<Point2, 8> on_circle{{{cx + x, cy + y}, {cx - y, cy + x}, {cx - x, cy - y},
+                                               {cx + y, cy - x}, {cx + y, cy + x}, {cx - x, cy + y},
+                                               {cx - y, cy - x}, {cx + x, cy - y}}};
+        const auto pick = *rc::gen::unique<std::vector<std::size_t>>(
+            4, rc::gen::inRange<std::size_t>(0, on_circle.size()));
+        const Point2 a = on_circle[pick[0]], b = on_circle[pick[1]], c = on_circle[pick[2]],
+                     d = on_circle[pick[3]];
+        AdaptiveStage stage{};
+        RC_ASSERT(incircle_staged(a, b, c, d, stage) == Sign::zero);
+        RC_ASSERT(stage != AdaptiveStage::double_word);
+        if (stage != AdaptiveStage::filter) ++rounded;
+        // The cosine form: a tie L = R when c and d are on opposite sides of ab.
+        RC_ASSERT(incircle_cosine_staged(a, b, c, d, stage) == independent_cosine_sign(a, b, c, d));
+        RC_ASSERT(stage != AdaptiveStage::double_word);
+    });
+    EXPECT_TRUE(ok);
+    EXPECT_GT(rounded, 0);
+}
+
+// Fixtures: one query decided by each of the double-word stage and the stages after it.
+TEST(IncircleDoubleWord, DecidesARoundedCocircularQuery) {
+    // (1, 0), (0, 1), (-1, 0) and a point of the unit circle rounded to doubles:
+    // (cos 1, sin 1) = (0x1.14a280fb5068cp-1, 0x1.aed548f090ceep-1); the rounded point is
+    // off the circle by about eps, which stage A cannot resolve.
+    AdaptiveStage stage{};
+    const Sign s = incircle_staged({1, 0}, {0, 1}, {-1, 0}, {0x1.14a280fb5068cp-1, 0x1.aed548f090ceep-1},
+                                   stage);
+    EXPECT_EQ(s, cgal_incircle({1, 0}, {0, 1}, {-1, 0}, {0x1.14a280fb5068cp-1, 0x1.aed548f090ceep-1}));
+    EXPECT_NE(s, Sign::zero);
+    EXPECT_EQ(stage, AdaptiveStage::double_word);
+}
+
+TEST(IncircleDoubleWord, LeavesDifferencesOutsideItsRangeToTheExpansions) {
+    // The same query at 2^300: the differences exceed icc_dw_max.
+    const double k = 0x1p300;
+    AdaptiveStage stage{};
+    const Point2 a{k, 0}, b{0, k}, c{-k, 0}, d{0x1.14a280fb5068cp-1 * k, 0x1.aed548f090ceep-1 * k};
+    EXPECT_EQ(incircle_staged(a, b, c, d, stage), cgal_incircle(a, b, c, d));
+    EXPECT_NE(stage, AdaptiveStage::double_word);
+    EXPECT_NE(stage, AdaptiveStage::filter);
+}
+
+// Exact ties on a lattice: the differences are small integers times one power of two, so
+// the small-integer stage decides them, before any expansion.
+TEST(SmallIntegers, DecideExactTiesOnALatticeCircle) {
+    for (const double scale : {1.0, 0x1p-30, 0x1p40}) {
+        for (const double shift : {0.0, 0x1p20, -12345.0}) {
+            const auto at = [&](double x, double y) { return Point2{(x + shift) * scale, (y - shift) * scale}; };
+            // Points of the circle x^2 + y^2 = 25; c and d on opposite sides of ab, and
+            // neither angle at c or d a right angle (a zero dot product decides earlier).
+            const Point2 a = at(5, 0), b = at(0, 5), c = at(-4, 3), d = at(4, 3);
+            AdaptiveStage stage{};
+            EXPECT_EQ(incircle_staged(a, b, c, d, stage), Sign::zero);
+            EXPECT_EQ(stage, AdaptiveStage::small_integer) << scale << " " << shift;
+            // The cosine form's tie L = R.
+            EXPECT_EQ(incircle_cosine_staged(a, b, c, d, stage), Sign::zero);
+            EXPECT_EQ(independent_cosine_sign(a, b, c, d), Sign::zero);
+            EXPECT_EQ(stage, AdaptiveStage::small_integer) << scale << " " << shift;
+        }
+    }
+}
+
+TEST(SmallIntegers, DecideNonzeroValuesToo) {
+    // (0, 4) is inside the circle through (5, 0), (0, 5), (-5, 0) (counter-clockwise), (0, -6)
+    // outside. Stage A decides both, so the integer evaluation is checked directly, on the
+    // differences from the fourth point.
+    const Point2 a{5, 0}, c{0, 5}, b{-5, 0}, inside{0, 4}, outside{0, -6};
+    AdaptiveStage stage{};
+    std::int64_t in[6] = {5, -4, 0, 1, -5, -4}, out[6] = {5, 6, 0, 11, -5, 6};
+    EXPECT_EQ(detail::incircle_small_sign(in), to_int(cgal_incircle(a, c, b, inside)));
+    EXPECT_EQ(detail::incircle_small_sign(out), to_int(cgal_incircle(a, c, b, outside)));
+    EXPECT_EQ(incircle_staged(a, c, b, inside, stage), Sign::positive);
+}
+
+TEST(SmallIntegers, LeaveWideDifferencesToTheOtherStages) {
+    // 2^31 + 1 needs 32 bits: beyond the window, so the tie goes to the expansions.
+    const double r = 0x1p31 + 1;
+    const Point2 a{r, 0}, b{-r, 0}, c{0, r}, d{0, -r};
+    AdaptiveStage stage{};
+    EXPECT_EQ(incircle_staged(a, b, c, d, stage), Sign::zero);
+    EXPECT_NE(stage, AdaptiveStage::small_integer);
+    EXPECT_NE(stage, AdaptiveStage::double_word);
+}
+
+}  // namespace
+}  // namespace exidel::test
