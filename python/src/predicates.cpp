@@ -1,14 +1,21 @@
 // exidel.orient2d, incircle, incircle_cosine, compare_distance: one predicate over rows of
 // point arrays. The loop runs here with the GIL released, compiled once per kernel type
-// (one std::visit per call, none per row); a (2,) or (1, 2) argument broadcasts.
+// (one std::visit per call, none per row); a (2,) or (1, 2) argument broadcasts. The
+// adaptive kernel on arrays that do not broadcast uses the batched predicates.
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
+#include <span>
 #include <string>
+#include <type_traits>
 #include <variant>
+#include <vector>
 
 #include "common.hpp"
+#include "exidel/predicates/batch.hpp"
 #include "exidel/predicates/predicate.hpp"
 
 namespace exidel::python {
@@ -35,6 +42,26 @@ void evaluate_rows(const K& kernel, const std::array<const Point2*, N>& data,
     }
 }
 
+/// The adaptive kernel on rows without broadcasting: the batched predicates (batch.hpp),
+/// whose AVX2 filters take four rows at a time.
+template <Predicate P, std::size_t N>
+void evaluate_batch(const std::array<const Point2*, N>& data, std::int8_t* out, std::size_t rows) {
+    static_assert(sizeof(Sign) == sizeof(std::int8_t));
+    std::array<std::span<const Point2>, N> q;
+    for (std::size_t k = 0; k < N; ++k) q[k] = {data[k], rows};
+    std::vector<Sign> signs(rows);
+    if constexpr (P == Predicate::orient2d) {
+        batch::orient2d(q[0], q[1], q[2], signs);
+    } else if constexpr (P == Predicate::incircle) {
+        batch::incircle(q[0], q[1], q[2], q[3], signs);
+    } else if constexpr (P == Predicate::incircle_cosine) {
+        batch::incircle_cosine(q[0], q[1], q[2], q[3], signs);
+    } else {
+        batch::compare_distance(q[0], q[1], q[2], signs);
+    }
+    if (rows > 0) std::memcpy(out, signs.data(), rows);
+}
+
 template <Predicate P, std::size_t N>
 py::array_t<std::int8_t> vectorised(const std::array<py::object, N>& args,
                                     const std::array<const char*, N>& names,
@@ -55,7 +82,15 @@ py::array_t<std::int8_t> vectorised(const std::array<py::object, N>& args,
     std::int8_t* out = result.mutable_data();
     {
         py::gil_scoped_release release;
-        std::visit([&](const auto& k) { evaluate_rows<P>(k, data, stride, out, rows); }, kernel);
+        std::visit(
+            [&](const auto& k) {
+                const bool broadcasts = rows > 1 && std::find(stride.begin(), stride.end(), 0) != stride.end();
+                if constexpr (std::is_same_v<std::decay_t<decltype(k)>, AdaptiveKernel>) {
+                    if (!broadcasts) return evaluate_batch<P>(data, out, rows);
+                }
+                evaluate_rows<P>(k, data, stride, out, rows);
+            },
+            kernel);
     }
     return result;
 }
