@@ -6,7 +6,7 @@ runs the binary itself:
 
   python3 bench/ratios.py results.json
   python3 bench/ratios.py --run build/bench/exidel_bench_predicates --repetitions 5 \
-      [--filter REGEX]
+      [--filter REGEX] [--markdown]
 
 Uses the median over repetitions of each benchmark's CPU time (the machine is shared:
 CPU time is less disturbed by other processes than wall time). With one repetition the
@@ -35,7 +35,7 @@ def medians(report):
         key = tuple(parts)
         scale = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}[b.get("time_unit", "ns")]
         # A batched benchmark handles per_iteration queries per iteration: per query.
-        scale /= b.get("per_iteration", 1.0)
+        scale /= b.get("per_iteration") or 1.0  # (0 in the stddev aggregate)
         if b.get("run_type") == "aggregate":
             if b.get("aggregate_name") == "median":
                 aggregated[key] = b["cpu_time"] * scale
@@ -81,6 +81,25 @@ def print_tables(m, out=sys.stdout):
                   f"{ratio('adaptive', 'adaptive-batch'):>16}\n")
 
 
+def print_markdown(m, out=sys.stdout):
+    """The README's table: per predicate and input, double, adaptive (one call per query),
+    adaptive batched, CGAL, and the ratios adaptive / CGAL and adaptive / batched."""
+    rows = sorted({(p, i) for p, i, _ in m}, key=lambda r: (r[0], r[1] != "uniform", r[1]))
+    out.write("| predicate / input | double | adaptive | batched | CGAL Epick | "
+              "adaptive / CGAL | batch speed-up |\n|---|---:|---:|---:|---:|---:|---:|\n")
+    for p, i in rows:
+        def cell(k):
+            v = m.get((p, i, k))
+            return "-" if v is None else (f"{v:.1f}" if v < 100 else f"{v:.0f}")
+
+        def ratio(num, den):
+            a, b = m.get((p, i, num)), m.get((p, i, den))
+            return f"{a / b:.2f}" if a is not None and b else "-"
+        out.write(f"| {p} / {i} | {cell('double')} | {cell('adaptive')} | "
+                  f"{cell('adaptive-batch')} | {cell(PEER)} | {ratio('adaptive', PEER)} | "
+                  f"{ratio('adaptive', 'adaptive-batch')} |\n")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -88,6 +107,7 @@ def main():
     ap.add_argument("--run", metavar="BINARY", help="run this exidel_bench_predicates")
     ap.add_argument("--repetitions", type=int, default=5)
     ap.add_argument("--filter", default="", help="--benchmark_filter for --run")
+    ap.add_argument("--markdown", action="store_true", help="the README's table instead")
     args = ap.parse_args()
     if (args.json is None) == (args.run is None):
         ap.error("give either a JSON file or --run BINARY")
@@ -107,7 +127,10 @@ def main():
     m = medians(report)
     if not m:
         sys.exit("no predicate/input/kernel benchmarks in the input")
-    print_tables(m)
+    if args.markdown:
+        print_markdown(m)
+    else:
+        print_tables(m)
 
 
 if __name__ == "__main__":

@@ -9,7 +9,9 @@
 // integer arithmetic, and its sign is the predicate's (the polynomials are homogeneous,
 // so scaling every difference by 2^-g scales the value by a positive power of two).
 //
-// Ranges (every bound strict, |d| < 2^30 for the integers):
+// Ranges (every bound strict; |d| < 2^30 for the integers of the 30-bit window, < 2^62
+// for the 62-bit window of orient2d, compare_distance and incircle's second try, whose
+// ranges are stated beside each function):
 //   incircle: lifts dx^2 + dy^2 < 2^61, crosses |p q - r s| < 2^61, each lift x cross
 //   < 2^122, the sum of three < 2^124 < 2^127: signed 128-bit;
 //   incircle_cosine: squared lengths and |u|, |v| < 2^61, ac2 bc2 and u^2 < 2^122 (unsigned
@@ -27,15 +29,19 @@
 namespace exidel::detail {
 
 inline constexpr int small_bits = 30;
+/// The wider window of the 128/256-bit evaluations (orient2d, compare_distance, and
+/// incircle's second try).
+inline constexpr int wide_bits = 62;
 
 // GCC's and Clang's 128-bit integers (__extension__: not ISO C++, so -Wpedantic would warn).
 __extension__ typedef __int128 i128;
 __extension__ typedef unsigned __int128 u128;
 
 /// Converts n exact differences to integers d / 2^g sharing the least exponent g, when
-/// every one is below 2^(g + small_bits); false otherwise (or if any is not finite).
-template <int N>
+/// every one is below 2^(g + Bits); false otherwise (or if any is not finite).
+template <int Bits = small_bits, int N>
 bool to_small_integers(const double (&v)[N], std::int64_t (&out)[N]) noexcept {
+    static_assert(Bits <= 62, "the integers are int64_t");
     int low = INT_MAX, high = INT_MIN;
     Binary64 bits[N];
     for (int i = 0; i < N; ++i) {
@@ -51,9 +57,9 @@ bool to_small_integers(const double (&v)[N], std::int64_t (&out)[N]) noexcept {
         for (auto& o : out) o = 0;
         return true;
     }
-    if (high - low > small_bits) return false;
+    if (high - low > Bits) return false;
     for (int i = 0; i < N; ++i) {
-        // significand * 2^(exponent - low): a shift left by at most small_bits, exact.
+        // significand * 2^(exponent - low): a shift left by at most Bits places, exact.
         const std::int64_t m = bits[i].signed_significand();
         const int shift = bits[i].exponent - low;
         out[i] = shift >= 0 ? m * (std::int64_t{1} << shift) : m / (std::int64_t{1} << -shift);
@@ -74,6 +80,23 @@ inline int incircle_small_sign(const std::int64_t (&d)[6]) noexcept {
     return (det > 0) - (det < 0);
 }
 
+/// orient2d of integer differences (a - c, b - c) below 2^wide_bits: each product is below
+/// 2^124 and their difference below 2^125, in signed 128 bits.
+inline int orient2d_small_sign(const std::int64_t (&d)[4]) noexcept {
+    static_assert(2 * wide_bits + 1 <= 127, "two products and their difference fit");
+    const auto [acx, acy, bcx, bcy] = d;
+    const i128 det = i128{acx} * bcy - i128{acy} * bcx;
+    return (det > 0) - (det < 0);
+}
+
+/// |p - c|^2 - |q - c|^2 of integer differences below 2^wide_bits: each sum of squares is
+/// below 2^125, their difference below 2^125 in magnitude, in signed 128 bits.
+inline int distance_small_sign(const std::int64_t (&d)[4]) noexcept {
+    const auto [pcx, pcy, qcx, qcy] = d;
+    const i128 det = (i128{pcx} * pcx + i128{pcy} * pcy) - (i128{qcx} * qcx + i128{qcy} * qcy);
+    return (det > 0) - (det < 0);
+}
+
 /// An unsigned 256-bit value as two 128-bit halves, for comparing products exactly.
 struct U256 {
     u128 hi, lo;
@@ -90,6 +113,34 @@ inline U256 mul_wide(u128 x, u128 y) noexcept {
     // Middle column: the high half of p00 plus the low halves of p01 and p10 (< 3 * 2^64).
     const u128 middle = (p00 >> 64) + lo64(p01) + lo64(p10);
     return {p11 + (p01 >> 64) + (p10 >> 64) + (middle >> 64), (middle << 64) | lo64(p00)};
+}
+
+/// a + b, for values whose sum stays below 2^256.
+inline U256 add_wide(const U256& a, const U256& b) noexcept {
+    const u128 lo = a.lo + b.lo;
+    return {a.hi + b.hi + (lo < a.lo ? 1 : 0), lo};
+}
+
+/// The incircle determinant of integer differences below 2^wide_bits, exactly: lifts below
+/// 2^125 (unsigned 128 bits), crosses below 2^125 in magnitude (signed 128 bits), each
+/// lift x |cross| below 2^250 (mul_wide), and the positive and negative terms summed
+/// apart (each sum below 3 * 2^250) and compared.
+inline int incircle_wide_sign(const std::int64_t (&d)[6]) noexcept {
+    static_assert(2 * wide_bits + 1 <= 126, "a lift or a cross fits in 127 bits");
+    const auto [adx, ady, bdx, bdy, cdx, cdy] = d;
+    const auto lift = [](std::int64_t x, std::int64_t y) { return u128(i128{x} * x + i128{y} * y); };
+    const auto cross = [](std::int64_t p, std::int64_t q, std::int64_t r, std::int64_t s) {
+        return i128{p} * q - i128{r} * s;
+    };
+    const u128 lifts[3] = {lift(adx, ady), lift(bdx, bdy), lift(cdx, cdy)};
+    const i128 crosses[3] = {cross(bdx, cdy, cdx, bdy), cross(cdx, ady, adx, cdy),
+                             cross(adx, bdy, bdx, ady)};
+    U256 positive{0, 0}, negative{0, 0};
+    for (int i = 0; i < 3; ++i) {
+        const U256 term = mul_wide(lifts[i], u128(crosses[i] < 0 ? -crosses[i] : crosses[i]));
+        (crosses[i] < 0 ? negative : positive) = add_wide(crosses[i] < 0 ? negative : positive, term);
+    }
+    return (negative < positive) - (positive < negative);
 }
 
 /// For incircle_cosine with dot products of opposite nonzero signs: the sign of

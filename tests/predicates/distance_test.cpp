@@ -54,36 +54,25 @@ TYPED_TEST(DistanceVsCgal, MatchesCgalOnNudgedTies) {
 
 // ---- The adaptive kernel's stages -------------------------------------------------------
 
-bool in_expansion_range(const DistanceQuery& q) {
-    // Inside expansion_safe's degree-2 range: every nonzero |v| < 2^501, and its grid
-    // 2^(ilogb(v) - 52) at least 2^-537 (so the products' grid 2^-1074 is representable),
-    // i.e. |v| >= 2^-485. (The first version said 2^-500: the fixture below.)
-    for (const Point2& pt : q) {
-        for (double v : {pt.x, pt.y}) {
-            if (v != 0 && (std::fabs(v) < 0x1p-485 || std::fabs(v) >= 0x1p501)) return false;
-        }
-    }
-    return true;
-}
-
-// Found by ExactTiesOnGridsEndInStageB with the test's first range limit (2^-500): a tie
-// at 2^-486 is below the expansion range (2 (-486 - 52) < -1074) and is decided by GMP,
-// correctly; one binade up, the expansions decide it.
+// Found by ExactTiesOnGridsEndInStageB (now ...EndInTheSmallIntegerStage) with the test's
+// first range limit (2^-500): a tie at 2^-486 is below the expansion range
+// (2 (-486 - 52) < -1074), and was decided by GMP, correctly. Since the small-integer stage
+// (exact differences in a 62-bit window, 128-bit integers) it is decided there at every
+// scale, before the expansion range matters.
 TEST(DistanceStages, TieAtTheLowerEdgeOfTheExpansionRange) {
     AdaptiveStage stage{};
     EXPECT_EQ(compare_distance_staged({0, 0}, {0, 0x1p-486}, {0x1p-486, 0}, stage), Sign::zero);
-    EXPECT_EQ(stage, AdaptiveStage::gmp);
+    EXPECT_EQ(stage, AdaptiveStage::small_integer);
     EXPECT_EQ(compare_distance_staged({0, 0}, {0, 0x1p-485}, {0x1p-485, 0}, stage), Sign::zero);
-    EXPECT_EQ(stage, AdaptiveStage::stage_b);
+    EXPECT_EQ(stage, AdaptiveStage::small_integer);
 }
 
-TEST(DistanceStages, ExactTiesOnGridsEndInStageB) {
+TEST(DistanceStages, ExactTiesOnGridsEndInTheSmallIntegerStage) {
     EXPECT_TRUE(rc::check("grid ties decided from exact differences", [] {
         const DistanceQuery q = *gen_exact_tie();
-        RC_PRE(in_expansion_range(q));
         AdaptiveStage stage{};
         RC_ASSERT(compare_distance_staged(q[0], q[1], q[2], stage) == Sign::zero);
-        RC_ASSERT(stage == AdaptiveStage::stage_b);
+        RC_ASSERT(stage == AdaptiveStage::small_integer);
     }));
 }
 
@@ -102,18 +91,24 @@ TEST(DistanceStages, EachStageIsReached) {
     // Far apart: the filter.
     EXPECT_EQ(compare_distance_staged({0, 0}, {3, 0}, {1, 1}, stage), Sign::positive);
     EXPECT_EQ(stage, AdaptiveStage::filter);
-    // A tie with exact differences and exact squares.
+    // Ties with exact differences: the small-integer stage, squares exact or not
+    // ((2^30 + 1)^2 needs 61 bits).
     EXPECT_EQ(compare_distance_staged({1, 2}, {4, 6}, {6, 2}, stage), Sign::zero);
-    EXPECT_EQ(stage, AdaptiveStage::stage_b);
-    // A tie whose squares are not doubles: (2^30 + 1)^2 needs 61 bits.
+    EXPECT_EQ(stage, AdaptiveStage::small_integer);
     const double big = 0x1p30 + 1;
     EXPECT_EQ(compare_distance_staged({0, 0}, {big, 0}, {0, -big}, stage), Sign::zero);
+    EXPECT_EQ(stage, AdaptiveStage::small_integer);
+    // Exact differences beyond the 62-bit window (2^60 + 1 next to 2^-10): stage B.
+    EXPECT_EQ(compare_distance_staged({0, 0}, {0x1p60, 0x1p-10}, {0x1p-10, 0x1p60}, stage),
+              Sign::zero);
     EXPECT_EQ(stage, AdaptiveStage::stage_b);
     // Differences that round: 1 - 2^-60 is not a double; p is 2^-60 closer than q.
     EXPECT_EQ(compare_distance_staged({0x1p-60, 0}, {1, 0}, {0, 1}, stage), Sign::negative);
     EXPECT_EQ(stage, AdaptiveStage::exact);
-    // Beyond the expansion range: GMP.
-    EXPECT_EQ(compare_distance_staged({0, 0}, {1e300, 0}, {0, -1e300}, stage), Sign::zero);
+    // Beyond the expansion range, differences that round: GMP. |p - c|^2 = 1e600 - 1e300 +
+    // 1/4 and |q - c|^2 = 1e600 + 1/4 (exactly, in the doubles these decimals round to).
+    EXPECT_EQ(compare_distance_staged({0.5, 0}, {1e300, 0}, {0, -1e300}, stage),
+              cgal_compare_distance({0.5, 0}, {1e300, 0}, {0, -1e300}));
     EXPECT_EQ(stage, AdaptiveStage::gmp);
 }
 

@@ -176,13 +176,16 @@ TEST(IncircleDoubleWord, NeverDecidesAnExactTieWhoseEvaluationRounds) {
 
 // Fixtures: one query decided by each of the double-word stage and the stages after it.
 TEST(IncircleDoubleWord, DecidesARoundedCocircularQuery) {
-    // (1, 0), (0, 1), (-1, 0) and a point of the unit circle rounded to doubles:
-    // (cos 1, sin 1) = (0x1.14a280fb5068cp-1, 0x1.aed548f090ceep-1); the rounded point is
-    // off the circle by about eps, which stage A cannot resolve.
+    // (cos t, sin t) rounded to doubles for t = 0.3, 2.0, 3.4, 4.7: off the unit circle by
+    // about eps, which stage A cannot resolve; some differences round (the exponents of the
+    // coordinates differ), so the small-integer stage does not apply either.
+    const Point2 a{0x1.e921dd42f09bap-1, 0x1.2e9cd95baba33p-2};
+    const Point2 b{-0x1.aa22657537205p-2, 0x1.d18f6ead1b446p-1};
+    const Point2 c{-0x1.ef002c35ebe04p-1, -0x1.05ac910ff4c6cp-2};
+    const Point2 d{-0x1.95f3a43506a34p-7, -0x1.fff5f0f37ec52p-1};
     AdaptiveStage stage{};
-    const Sign s = incircle_staged({1, 0}, {0, 1}, {-1, 0}, {0x1.14a280fb5068cp-1, 0x1.aed548f090ceep-1},
-                                   stage);
-    EXPECT_EQ(s, cgal_incircle({1, 0}, {0, 1}, {-1, 0}, {0x1.14a280fb5068cp-1, 0x1.aed548f090ceep-1}));
+    const Sign s = incircle_staged(a, b, c, d, stage);
+    EXPECT_EQ(s, cgal_incircle(a, b, c, d));
     EXPECT_NE(s, Sign::zero);
     EXPECT_EQ(stage, AdaptiveStage::double_word);
 }
@@ -191,7 +194,10 @@ TEST(IncircleDoubleWord, LeavesDifferencesOutsideItsRangeToTheExpansions) {
     // The same query at 2^300: the differences exceed icc_dw_max.
     const double k = 0x1p300;
     AdaptiveStage stage{};
-    const Point2 a{k, 0}, b{0, k}, c{-k, 0}, d{0x1.14a280fb5068cp-1 * k, 0x1.aed548f090ceep-1 * k};
+    const Point2 a{0x1.e921dd42f09bap-1 * k, 0x1.2e9cd95baba33p-2 * k};
+    const Point2 b{-0x1.aa22657537205p-2 * k, 0x1.d18f6ead1b446p-1 * k};
+    const Point2 c{-0x1.ef002c35ebe04p-1 * k, -0x1.05ac910ff4c6cp-2 * k};
+    const Point2 d{-0x1.95f3a43506a34p-7 * k, -0x1.fff5f0f37ec52p-1 * k};
     EXPECT_EQ(incircle_staged(a, b, c, d, stage), cgal_incircle(a, b, c, d));
     EXPECT_NE(stage, AdaptiveStage::double_word);
     EXPECT_NE(stage, AdaptiveStage::filter);
@@ -229,14 +235,50 @@ TEST(SmallIntegers, DecideNonzeroValuesToo) {
     EXPECT_EQ(incircle_staged(a, c, b, inside, stage), Sign::positive);
 }
 
-TEST(SmallIntegers, LeaveWideDifferencesToTheOtherStages) {
-    // 2^31 + 1 needs 32 bits: beyond the window, so the tie goes to the expansions.
+TEST(SmallIntegers, TakeTheWideWindowWhenTheNarrowOneIsTooSmall) {
+    // 2^31 + 1 needs 32 bits: beyond the 30-bit window, inside the 62-bit one.
     const double r = 0x1p31 + 1;
     const Point2 a{r, 0}, b{-r, 0}, c{0, r}, d{0, -r};
     AdaptiveStage stage{};
     EXPECT_EQ(incircle_staged(a, b, c, d, stage), Sign::zero);
+    EXPECT_EQ(stage, AdaptiveStage::small_integer);
+    std::int64_t n[6];
+    const double v[6] = {r, r, -r, r, 0, 2 * r};
+    EXPECT_FALSE(detail::to_small_integers(v, n));
+    EXPECT_TRUE(detail::to_small_integers<detail::wide_bits>(v, n));
+    EXPECT_EQ(detail::incircle_wide_sign(n), 0);
+}
+
+TEST(SmallIntegers, LeaveWiderDifferencesToTheOtherStages) {
+    // Differences such as (2^52 + 1) - 2^-11 need 64 bits: they round, so no window applies.
+    const double r = 0x1p52 + 1, s = 0x1p-11;
+    const Point2 a{r, s}, b{-r, s}, c{s, r}, d{s, -r};
+    AdaptiveStage stage{};
+    EXPECT_EQ(incircle_staged(a, b, c, d, stage), cgal_incircle(a, b, c, d));
     EXPECT_NE(stage, AdaptiveStage::small_integer);
-    EXPECT_NE(stage, AdaptiveStage::double_word);
+}
+
+TEST(SmallIntegers, TwoEqualPointsAreATie) {
+    const Point2 a{0.1, 0.7}, b{0.3, 0.2}, c{0.9, 0.4};
+    for (const auto& q : {std::array<Point2, 4>{a, a, b, c}, {a, b, a, c}, {a, b, c, a},
+                          {b, a, a, c}, {b, a, c, a}, {b, c, a, a}}) {
+        AdaptiveStage stage{};
+        EXPECT_EQ(incircle_staged(q[0], q[1], q[2], q[3], stage), Sign::zero);
+        EXPECT_EQ(cgal_incircle(q[0], q[1], q[2], q[3]), Sign::zero);
+    }
+}
+
+TEST(SmallIntegers, DecideExactTiesOfOrient2dAndCompareDistance) {
+    // Collinear points with 40-bit differences, and a distance tie on a lattice circle.
+    const double big = 0x1p40 + 1;
+    AdaptiveStage stage{};
+    EXPECT_EQ(orient2d_staged({0, 0}, {big, 3 * big}, {2 * big, 6 * big}, stage), Sign::zero);
+    EXPECT_EQ(stage, AdaptiveStage::small_integer);
+    EXPECT_EQ(compare_distance_staged({1e6, -1e6}, {1e6 + 3, -1e6 + 4}, {1e6 - 5, -1e6}, stage),
+              Sign::zero);
+    EXPECT_EQ(stage, AdaptiveStage::small_integer);
+    EXPECT_EQ(compare_distance_staged({1e6, -1e6}, {1e6 + 3, -1e6 + 4}, {1e6 - 6, -1e6}, stage),
+              Sign::negative);
 }
 
 }  // namespace
