@@ -20,6 +20,7 @@
 // has the argument.
 #pragma once
 
+#include <algorithm>
 #include <bit>
 #include <climits>
 #include <cstdint>
@@ -42,27 +43,33 @@ __extension__ typedef unsigned __int128 u128;
 template <int Bits = small_bits, int N>
 bool to_small_integers(const double (&v)[N], std::int64_t (&out)[N]) noexcept {
     static_assert(Bits <= 62, "the integers are int64_t");
+    // Written with selects rather than branches: the data decide every condition, and on
+    // lattice queries they vary from call to call (measured: branches cost several
+    // mispredictions per call).
     int low = INT_MAX, high = INT_MIN;
-    Binary64 bits[N];
+    std::int64_t m[N];
+    int exponent[N];
+    bool finite = true;
     for (int i = 0; i < N; ++i) {
-        bits[i] = decode(v[i]);
-        if (bits[i].biased_exponent == 2047) return false;
-        if (bits[i].significand == 0) continue;
-        const int tz = std::countr_zero(bits[i].significand);
-        const int top = bits[i].exponent + std::bit_width(bits[i].significand);  // |v| < 2^top
-        low = low < bits[i].exponent + tz ? low : bits[i].exponent + tz;
-        high = high > top ? high : top;
+        const Binary64 bits = decode(v[i]);
+        finite &= bits.biased_exponent != 2047;
+        const bool nonzero = bits.significand != 0;
+        const int lowest = bits.exponent + std::countr_zero(bits.significand | (std::uint64_t{1} << 63));
+        const int top = bits.exponent + std::bit_width(bits.significand);  // |v| < 2^top
+        low = std::min(low, nonzero ? lowest : INT_MAX);
+        high = std::max(high, nonzero ? top : INT_MIN);
+        m[i] = bits.signed_significand();
+        exponent[i] = bits.exponent;
     }
-    if (low == INT_MAX) {  // all zero
-        for (auto& o : out) o = 0;
-        return true;
-    }
-    if (high - low > Bits) return false;
+    if (!finite || (high != INT_MIN && high - low > Bits)) return false;
     for (int i = 0; i < N; ++i) {
-        // significand * 2^(exponent - low): a shift left by at most Bits places, exact.
-        const std::int64_t m = bits[i].signed_significand();
-        const int shift = bits[i].exponent - low;
-        out[i] = shift >= 0 ? m * (std::int64_t{1} << shift) : m / (std::int64_t{1} << -shift);
+        // significand * 2^(exponent - low): a shift left by at most Bits places, or right
+        // by at most the significand's trailing zeros (low is at most the exponent of its
+        // lowest set bit), exact either way; zero stays zero. The clamps keep the shift
+        // counts in [0, 63] for zeros, whose exponent says nothing.
+        const int shift = exponent[i] - low;
+        const int left = std::clamp(shift, 0, 63), right = std::clamp(-shift, 0, 63);
+        out[i] = static_cast<std::int64_t>(static_cast<std::uint64_t>(m[i]) << left) >> right;
     }
     return true;
 }
