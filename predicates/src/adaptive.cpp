@@ -240,6 +240,17 @@ int incircle_of_rounded_differences(double adx, double ady, double bdx, double b
 
 using detail::dw::Word;
 
+/// Every nonzero |high part| in [lo, hi], the range a double-word stage is proven for.
+/// Negated comparisons, so that an infinite difference (or NaN) fails too.
+template <int N>
+bool in_double_word_range(const Word (&w)[N], double lo, double hi) {
+    for (const Word& v : w) {
+        const double m = std::fabs(v.hi);
+        if (!(m <= hi) || (m != 0 && m < lo)) return false;
+    }
+    return true;
+}
+
 template <bool Fma>
 [[gnu::always_inline]] inline bool incircle_double_word_eval(const Word (&w)[6], Sign& sign) {
     using detail::dw::add, detail::dw::mul, detail::dw::neg;
@@ -270,11 +281,7 @@ template <bool Fma>
     using detail::dw::two_sum;
     const Word w[6] = {two_sum(a.x, -d.x), two_sum(a.y, -d.y), two_sum(b.x, -d.x),
                        two_sum(b.y, -d.y), two_sum(c.x, -d.x), two_sum(c.y, -d.y)};
-    for (const Word& v : w) {
-        const double m = std::fabs(v.hi);
-        // Negated, so that an infinite difference (or NaN) leaves the stage too.
-        if (!(m <= eb::icc_dw_max) || (m != 0 && m < eb::icc_dw_min)) return false;
-    }
+    if (!in_double_word_range(w, eb::icc_dw_min, eb::icc_dw_max)) return false;
 #if defined(__FMA__) || defined(__ARM_FEATURE_FMA)
     return incircle_double_word_eval<true>(w, sign);
 #else
@@ -447,10 +454,7 @@ template <bool Fma>
     const Word w[8] = {two_sum(a.x, -d.x), two_sum(a.y, -d.y), two_sum(b.x, -d.x),
                        two_sum(b.y, -d.y), two_sum(a.x, -c.x), two_sum(a.y, -c.y),
                        two_sum(b.x, -c.x), two_sum(b.y, -c.y)};
-    for (const Word& x : w) {
-        const double m = std::fabs(x.hi);
-        if (!(m <= eb::cos_dw_max) || (m != 0 && m < eb::cos_dw_min)) return false;
-    }
+    if (!in_double_word_range(w, eb::cos_dw_min, eb::cos_dw_max)) return false;
 #if defined(__FMA__) || defined(__ARM_FEATURE_FMA)
     return cosine_double_word_eval<true>(w, sign);
 #else
