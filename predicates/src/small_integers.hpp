@@ -61,7 +61,12 @@ bool to_small_integers(const double (&v)[N], std::int64_t (&out)[N]) noexcept {
         m[i] = bits.signed_significand();
         exponent[i] = bits.exponent;
     }
-    if (!finite || (high != INT_MIN && high - low > Bits)) return false;
+    if (!finite) return false;
+    if (high == INT_MIN) {  // every difference zero (and low still INT_MAX)
+        for (auto& o : out) o = 0;
+        return true;
+    }
+    if (high - low > Bits) return false;
     for (int i = 0; i < N; ++i) {
         // significand * 2^(exponent - low): a shift left by at most Bits places, or right
         // by at most the significand's trailing zeros (low is at most the exponent of its

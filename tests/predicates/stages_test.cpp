@@ -281,5 +281,20 @@ TEST(SmallIntegers, DecideExactTiesOfOrient2dAndCompareDistance) {
               Sign::negative);
 }
 
+// Found by UBSan (the batch property on integer_grid): when every difference is zero, the
+// window's lowest exponent stayed INT_MAX and the shift exponent - INT_MAX overflowed.
+TEST(SmallIntegers, AllDifferencesZero) {
+    const double zeros[4] = {0.0, -0.0, 0.0, 0.0};
+    std::int64_t n[4] = {1, 1, 1, 1};
+    EXPECT_TRUE(detail::to_small_integers<detail::wide_bits>(zeros, n));
+    for (const std::int64_t v : n) EXPECT_EQ(v, 0);
+    const Point2 p{0x1.8p-3, 7.0};
+    AdaptiveStage stage{};
+    EXPECT_EQ(orient2d_staged(p, p, p, stage), Sign::zero);
+    EXPECT_EQ(stage, AdaptiveStage::small_integer);
+    EXPECT_EQ(compare_distance_staged(p, p, p, stage), Sign::zero);
+    EXPECT_EQ(stage, AdaptiveStage::small_integer);
+}
+
 }  // namespace
 }  // namespace exidel::test
