@@ -46,8 +46,19 @@ def medians(report):
     return result
 
 
+def table_rows(m):
+    """(predicate, input) pairs, uniform first within each predicate."""
+    return sorted({(p, i) for p, i, _ in m}, key=lambda r: (r[0], r[1] != "uniform", r[1]))
+
+
+def ratio(m, p, i, num, den):
+    """num's median over den's for one predicate and input, or '-' if either is missing."""
+    a, b = m.get((p, i, num)), m.get((p, i, den))
+    return f"{a / b:.2f}" if a is not None and b else "-"
+
+
 def print_tables(m, out=sys.stdout):
-    rows = sorted({(p, i) for p, i, _ in m}, key=lambda r: (r[0], r[1] != "uniform", r[1]))
+    rows = table_rows(m)
     kernels = []
     for _, _, k in sorted(m):
         if k not in kernels:
@@ -73,31 +84,24 @@ def print_tables(m, out=sys.stdout):
     out.write(f"{'predicate/input':28}{'adaptive/double':>17}{'cgal/double':>13}"
               f"{'adaptive/cgal':>15}{'batch speed-up':>16}\n")
     for p, i in rows:
-        def ratio(num, den):
-            a, b = m.get((p, i, num)), m.get((p, i, den))
-            return f"{a / b:.2f}" if a is not None and b else "-"
-        out.write(f"{p + '/' + i:28}{ratio('adaptive', 'double'):>17}"
-                  f"{ratio(PEER, 'double'):>13}{ratio('adaptive', PEER):>15}"
-                  f"{ratio('adaptive', 'adaptive-batch'):>16}\n")
+        out.write(f"{p + '/' + i:28}{ratio(m, p, i, 'adaptive', 'double'):>17}"
+                  f"{ratio(m, p, i, PEER, 'double'):>13}{ratio(m, p, i, 'adaptive', PEER):>15}"
+                  f"{ratio(m, p, i, 'adaptive', 'adaptive-batch'):>16}\n")
 
 
 def print_markdown(m, out=sys.stdout):
     """The README's table: per predicate and input, double, adaptive (one call per query),
     adaptive batched, CGAL, and the ratios adaptive / CGAL and adaptive / batched."""
-    rows = sorted({(p, i) for p, i, _ in m}, key=lambda r: (r[0], r[1] != "uniform", r[1]))
+    rows = table_rows(m)
     out.write("| predicate / input | double | adaptive | batched | CGAL Epick | "
               "adaptive / CGAL | batch speed-up |\n|---|---:|---:|---:|---:|---:|---:|\n")
     for p, i in rows:
         def cell(k):
             v = m.get((p, i, k))
             return "-" if v is None else (f"{v:.1f}" if v < 100 else f"{v:.0f}")
-
-        def ratio(num, den):
-            a, b = m.get((p, i, num)), m.get((p, i, den))
-            return f"{a / b:.2f}" if a is not None and b else "-"
         out.write(f"| {p} / {i} | {cell('double')} | {cell('adaptive')} | "
-                  f"{cell('adaptive-batch')} | {cell(PEER)} | {ratio('adaptive', PEER)} | "
-                  f"{ratio('adaptive', 'adaptive-batch')} |\n")
+                  f"{cell('adaptive-batch')} | {cell(PEER)} | {ratio(m, p, i, 'adaptive', PEER)} | "
+                  f"{ratio(m, p, i, 'adaptive', 'adaptive-batch')} |\n")
 
 
 def main():
