@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iostream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -268,6 +269,23 @@ TEST(SmallIntegers, TwoEqualPointsAreATie) {
     }
 }
 
+TEST(SmallIntegers, TwoEqualPointsMakeOrient2dAndCompareDistanceZero) {
+    // Coordinates whose differences round (no integer window): the equality check decides.
+    const Point2 a{0.1, 0.7}, b{0.3, 0.2}, c{0.9, 0.4};
+    for (const auto& q : {std::array<Point2, 3>{a, a, c}, {a, c, c}, {c, b, c}, {b, b, b}}) {
+        AdaptiveStage stage{};
+        EXPECT_EQ(orient2d_staged(q[0], q[1], q[2], stage), Sign::zero);
+        EXPECT_EQ(stage, AdaptiveStage::small_integer);
+        EXPECT_EQ(cgal_orient2d(q[0], q[1], q[2]), Sign::zero);
+    }
+    AdaptiveStage stage{};
+    EXPECT_EQ(compare_distance_staged(a, b, b, stage), Sign::zero);
+    EXPECT_EQ(stage, AdaptiveStage::small_integer);
+    // One coordinate equal is not enough.
+    EXPECT_EQ(orient2d_staged(a, {a.x, 0.2}, c, stage), cgal_orient2d(a, {a.x, 0.2}, c));
+    EXPECT_NE(orient2d_staged(a, {a.x, 0.2}, c, stage), Sign::zero);
+}
+
 TEST(SmallIntegers, DecideExactTiesOfOrient2dAndCompareDistance) {
     // Collinear points with 40-bit differences, and a distance tie on a lattice circle.
     const double big = 0x1p40 + 1;
@@ -279,6 +297,42 @@ TEST(SmallIntegers, DecideExactTiesOfOrient2dAndCompareDistance) {
     EXPECT_EQ(stage, AdaptiveStage::small_integer);
     EXPECT_EQ(compare_distance_staged({1e6, -1e6}, {1e6 + 3, -1e6 + 4}, {1e6 - 6, -1e6}, stage),
               Sign::negative);
+}
+
+// The window test scales by powers of two far beyond one double's range
+// (proofs/bounds.md#small-integers): values at both ends of the exponent range.
+TEST(SmallIntegers, ScalingAtTheEndsOfTheExponentRange) {
+    std::int64_t n[3];
+    // Subnormal differences, scaled up by 2^1099 (two factors): exact integers.
+    const double tiny[3] = {0x1p-1074, 3 * 0x1p-1074, -0x1p-1070};
+    ASSERT_TRUE(detail::to_small_integers(tiny, n));
+    EXPECT_EQ(n[0], std::int64_t{1} << 25);
+    EXPECT_EQ(n[1], 3 * (std::int64_t{1} << 25));
+    EXPECT_EQ(n[2], -(std::int64_t{1} << 29));
+    // The largest doubles, scaled down by 2^-994.
+    const double huge[3] = {0x1.8p1023, -0x1p1023, 0};
+    ASSERT_TRUE(detail::to_small_integers(huge, n));
+    EXPECT_EQ(n[0], 3 * (std::int64_t{1} << 28));
+    EXPECT_EQ(n[1], -(std::int64_t{1} << 29));
+    EXPECT_EQ(n[2], 0);
+    // A value that the scaling underflows to zero is not an integer of the window.
+    const double spread[3] = {0x1p1000, 0x1p-1074, 0};
+    EXPECT_FALSE(detail::to_small_integers(spread, n));
+    EXPECT_FALSE(detail::to_small_integers<detail::wide_bits>(spread, n));
+    // The window's bottom bit: 2^-29 below 1 fits 30 bits, 2^-30 does not.
+    const double edge[3] = {1.0, 0x1p-29, -0.0};
+    ASSERT_TRUE(detail::to_small_integers(edge, n));
+    EXPECT_EQ(n[0], std::int64_t{1} << 29);
+    EXPECT_EQ(n[1], 1);
+    EXPECT_EQ(n[2], 0);
+    const double past[3] = {1.0, 0x1p-30, 0};
+    EXPECT_FALSE(detail::to_small_integers(past, n));
+    EXPECT_TRUE(detail::to_small_integers<detail::wide_bits>(past, n));
+    // Not finite: refused before any conversion.
+    const double bad[3][3] = {{1.0, std::numeric_limits<double>::infinity(), 0},
+                              {std::numeric_limits<double>::quiet_NaN(), 1.0, 0},
+                              {0, 0, -std::numeric_limits<double>::infinity()}};
+    for (const auto& v : bad) EXPECT_FALSE(detail::to_small_integers<detail::wide_bits>(v, n));
 }
 
 // Found by UBSan (the batch property on integer_grid): when every difference is zero, the
