@@ -274,8 +274,10 @@ StagesStudy run_stages_study(const StagesOptions& options, const RunOptions& run
     study.report = Report("Adaptive kernel: which stage decides");
     study.report.paragraph(
         "Fraction of calls decided by each stage of the adaptive kernel (filter: the "
-        "floating-point filter; small_integer: exact differences within 30 bits of each other, "
-        "evaluated in 64/128/256-bit integers (incircle, and the cosine form's final comparison); "
+        "floating-point filter; small_integer: two equal points (orient2d, incircle, "
+        "compare_distance), or exact differences that all fit one window of 30 bits (incircle, "
+        "and the cosine form's final comparison) or 62 bits (orient2d, compare_distance, and "
+        "incircle's second try), evaluated in 64/128/256-bit integers; "
         "double_word: the same value from the exact differences in double-word arithmetic with "
         "a proven bound; stage_b: exact value of the rounded differences, or for "
         "incircle_cosine the exact signs of the two dot products, and for compare_distance only "
