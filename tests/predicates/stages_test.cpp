@@ -250,6 +250,23 @@ TEST(SmallIntegers, TakeTheWideWindowWhenTheNarrowOneIsTooSmall) {
     EXPECT_EQ(detail::incircle_wide_sign(n), 0);
 }
 
+TEST(SmallIntegers, FullPrecisionTiesReachTheIntegersAfterTheDoubleWordStage) {
+    // The corners of a rectangle with odd 46-bit sides: cocircular, and the differences'
+    // significands do not end in zero bits, so incircle tries the double-word stage first
+    // (a near-tie is likelier on such data); it cannot decide a tie, and the 62-bit window
+    // then does. Both orders must give the same exact answer.
+    const double x = 0x1p45 + 1, y = 0x1p45 + 3;
+    const Point2 a{0, 0}, b{x, 0}, c{x, y}, d{0, y};
+    AdaptiveStage stage{};
+    EXPECT_EQ(incircle_staged(a, b, c, d, stage), Sign::zero);
+    EXPECT_EQ(stage, AdaptiveStage::small_integer);
+    EXPECT_EQ(cgal_incircle(a, b, c, d), Sign::zero);
+    // Moved by one ulp, the same data are a near-tie that the double-word stage decides.
+    const Point2 e{0, std::nextafter(y, 0x1p46)};
+    EXPECT_EQ(incircle_staged(a, b, c, e, stage), cgal_incircle(a, b, c, e));
+    EXPECT_EQ(stage, AdaptiveStage::double_word);
+}
+
 TEST(SmallIntegers, LeaveWiderDifferencesToTheOtherStages) {
     // Differences such as (2^52 + 1) - 2^-11 need 64 bits: they round, so no window applies.
     const double r = 0x1p52 + 1, s = 0x1p-11;
