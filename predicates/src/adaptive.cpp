@@ -324,7 +324,6 @@ template <bool Fma>
         std::bit_cast<std::uint64_t>(v.cdx) | std::bit_cast<std::uint64_t>(v.cdy);
     const bool tie_likely = (low_bits & 0xff) == 0;
     if (tie_likely) {
-        stage = AdaptiveStage::small_integer;
         if (Sign s; incircle_small_integers(a, b, c, d, v, s)) return s;
     }
     stage = AdaptiveStage::double_word;

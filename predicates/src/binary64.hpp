@@ -27,6 +27,12 @@ struct Binary64 {
     }
 };
 
+/// 2^e for -1074 <= e <= 1023, from its bits (exact; no library call).
+constexpr double pow2(int e) noexcept {
+    if (e >= -1022) return std::bit_cast<double>(static_cast<std::uint64_t>(e + 1023) << 52);
+    return std::bit_cast<double>(std::uint64_t{1} << (e + 1074));
+}
+
 constexpr Binary64 decode(double v) noexcept {
     const auto bits = std::bit_cast<std::uint64_t>(v);
     const auto field = static_cast<int>((bits >> 52) & 0x7ff);

@@ -45,12 +45,6 @@ namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
-/// 2^e for -1074 <= e <= 1023, from its bits (exact; no library call).
-constexpr double pow2(int e) noexcept {
-    if (e >= -1022) return std::bit_cast<double>(static_cast<std::uint64_t>(e + 1023) << 52);
-    return std::bit_cast<double>(std::uint64_t{1} << (e + 1074));
-}
-
 bool finite(Point2 p) noexcept { return std::isfinite(p.x) && std::isfinite(p.y); }
 
 Circumcenter classify(Point2 p) noexcept {
@@ -73,7 +67,7 @@ double half_gap(double s) noexcept {
     const detail::Binary64 bits = detail::decode(s);
     if (bits.biased_exponent < 3) return 0.0;
     const bool power_of_two = bits.significand == (std::uint64_t{1} << 52);
-    return pow2(bits.biased_exponent - 1075 - (power_of_two ? 2 : 1));
+    return detail::pow2(bits.biased_exponent - 1075 - (power_of_two ? 2 : 1));
 }
 
 /// The differences b - a and c - a exactly (Two-Diff), when they are in the range both

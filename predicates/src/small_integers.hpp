@@ -40,11 +40,6 @@ inline constexpr int wide_bits = 62;
 __extension__ typedef __int128 i128;
 __extension__ typedef unsigned __int128 u128;
 
-/// 2^k as a double, for k in [-1022, 1023] (a normal power of two, built from its bits).
-constexpr double power_of_two(int k) noexcept {
-    return std::bit_cast<double>(static_cast<std::uint64_t>(k + 1023) << 52);
-}
-
 /// The window's top: the least h with |v_i| < 2^h for every i (0 when all are zero), or
 /// no_top when one is not finite.
 inline constexpr int no_top = INT_MIN;
@@ -78,11 +73,11 @@ bool to_small_integers(const double (&v)[N], int h, std::int64_t (&out)[N]) noex
     // h in [-1073, 1024], so k in [Bits - 1024, Bits + 1073]: two factors, each a normal
     // power of two.
     const int k = Bits - h, k1 = k / 2, k2 = k - k1;
-    const double s1 = power_of_two(k1), s2 = power_of_two(k2);
+    const double s1 = pow2(k1), s2 = pow2(k2);
     bool integers = true;
     for (int i = 0; i < N; ++i) {
-        // |x| < 2^Bits <= 2^62 (a scaling by a power of two rounds, if at all, toward a
-        // smaller magnitude class, never past 2^Bits), so the truncation is defined.
+        // |x| <= 2^Bits <= 2^62 (the exact value is below 2^Bits, and rounding cannot pass
+        // that power of two), so the truncation is defined.
         const double x = (v[i] * s1) * s2;
         const auto n = static_cast<std::int64_t>(x);
         integers &= (static_cast<double>(n) == x) & ((n != 0) | (v[i] == 0));  // no branches
