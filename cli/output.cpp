@@ -58,9 +58,26 @@ std::string directory_of(const std::string& path) {
     return slash == std::string::npos ? "." : path.substr(0, slash == 0 ? 1 : slash);
 }
 
+/// The file `path` names once the symbolic links at its end (a link to a link ...) are
+/// followed: the output is written through a link, never over it. A relative target is
+/// relative to the link's directory; a dangling link names the file it would create.
+std::string follow_links(std::string path) {
+    for (int hops = 0; hops < 40; ++hops) {  // Linux's own limit (MAXSYMLINKS)
+        struct stat st {};
+        if (::lstat(path.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return path;
+        std::string target(max_path, '\0');
+        const ssize_t n = ::readlink(path.c_str(), target.data(), target.size());
+        if (n < 0 || std::size_t(n) >= target.size()) return path;  // then the open reports it
+        target.resize(std::size_t(n));
+        path = target.starts_with('/') ? target : directory_of(path) + "/" + target;
+    }
+    throw std::runtime_error("cannot write '" + path + "': " + std::strerror(ELOOP));
+}
+
 }  // namespace
 
-PendingFile::PendingFile(std::string path) : path_(std::move(path)), temp_(path_ + ".tmp.XXXXXX") {
+PendingFile::PendingFile(std::string path)
+    : path_(follow_links(std::move(path))), temp_(path_ + ".tmp.XXXXXX") {
     // A device or a pipe (/dev/null, /dev/stdout, a FIFO) is written in place: renaming a
     // temporary over it would replace /dev/null with a regular file.
     struct stat st {};

@@ -8,7 +8,8 @@
 // unlinks every pending temporary, then lets the signal end the process as it would
 // have: the exit status still says "killed by signal N"). A path that exists and is not a
 // regular file (/dev/null, a FIFO) is written directly: it has no partial state to hide,
-// and a rename would replace the device with a file.
+// and a rename would replace the device with a file. A symbolic link is written through:
+// the temporary file goes next to the file the link names, and the link stays a link.
 #pragma once
 
 #include <iosfwd>
@@ -25,6 +26,7 @@ public:
     PendingFile(const PendingFile&) = delete;
     PendingFile& operator=(const PendingFile&) = delete;
 
+    /// The file written: the path given, with symbolic links at its end followed.
     const std::string& path() const noexcept { return path_; }
 
     /// Opens the temporary file for writing (truncated), binary.

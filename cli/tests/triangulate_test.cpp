@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <random>
@@ -658,6 +659,42 @@ TEST(ExidelTriangulate, DevicesAndPipesAreWrittenInPlace) {
     EXPECT_TRUE(S_ISFIFO(st.st_mode));
     EXPECT_EQ(slurp(captured), run("-i " + in).out);
     EXPECT_EQ(run("-i " + in + " -o " + work_path("")).status, 1);  // a directory: an error
+}
+
+// -o onto a symbolic link writes the file the link names and leaves the link a link (it
+// used to be replaced by the output, found by issue 15's list of weak spots). Relative
+// and absolute targets, a chain of two links, and a dangling link, which creates its
+// target.
+TEST(ExidelTriangulate, OutputIsWrittenThroughSymbolicLinks) {
+    namespace fs = std::filesystem;
+    const fs::path dir = work_path("links");
+    fs::remove_all(dir);
+    fs::create_directories(dir / "sub");
+    const std::string in = in_any(), expected = run("-i " + in).out;
+    write_file("links/sub/real.json", "old\n");
+    fs::create_symlink("sub/real.json", dir / "relative.json");
+    fs::create_symlink(dir / "relative.json", dir / "chain.json");
+    fs::create_symlink("sub/new.json", dir / "dangling.json");
+    for (const char* link : {"relative.json", "chain.json", "dangling.json"}) {
+        const fs::path path = dir / link;
+        ASSERT_EQ(run("-i " + in + " -o '" + path.string() + "'").status, 0) << link;
+        EXPECT_TRUE(fs::is_symlink(path)) << link;
+        EXPECT_EQ(slurp(path.string()), expected) << link;
+    }
+    EXPECT_EQ(slurp((dir / "sub/real.json").string()), expected);
+    EXPECT_EQ(slurp((dir / "sub/new.json").string()), expected);
+    // Nothing left over next to the links or their targets.
+    for (const fs::path& d : {dir, dir / "sub"}) {
+        for (const auto& e : fs::directory_iterator(d)) {
+            EXPECT_EQ(e.path().string().find(".tmp."), std::string::npos) << e.path();
+        }
+    }
+    // A loop of links is an error, not a hang.
+    fs::create_symlink("loop-b.json", dir / "loop-a.json");
+    fs::create_symlink("loop-a.json", dir / "loop-b.json");
+    const auto looped = run("-i " + in + " -o '" + (dir / "loop-a.json").string() + "'");
+    EXPECT_EQ(looped.status, 1);
+    EXPECT_NE(looped.err.find("Too many levels of symbolic links"), std::string::npos) << looped.err;
 }
 
 }  // namespace

@@ -12,9 +12,12 @@ std::vector<testing::Family> parse_families(std::string_view list) {
     while (!list.empty()) {
         const std::size_t comma = list.find(',');
         const std::string_view name = list.substr(0, comma);
-        if (name == "all" || name == "near") {
+        if (name == "all" || name == "near" || name == "degenerate") {
             for (const auto& info : testing::all_families()) {
-                if (name == "all" || info.near_degenerate) out.push_back(info.family);
+                if (name == "all" || (name == "near" && info.near_degenerate) ||
+                    (name == "degenerate" && info.degenerate)) {
+                    out.push_back(info.family);
+                }
             }
         } else {
             out.push_back(testing::family_from_name(name));

@@ -352,7 +352,8 @@ std::string_view family_definition(testing::Family f);
 /// is rendered on its own, as `study all` defines every family once at its top).
 Report family_definitions(std::span<const testing::Family> families, bool standalone = true);
 
-/// Families by name from a comma-separated list ("all" or "near" allowed).
+/// Families by name from a comma-separated list; "all", "near" (the near_degenerate
+/// families) and "degenerate" (the degenerate ones) stand for several.
 std::vector<testing::Family> parse_families(std::string_view list);
 
 }  // namespace exidel::research
