@@ -34,7 +34,8 @@ int certify_command(std::span<const std::string_view> args);
 /// `exidel study`: the research instruments of lib/research (study.cpp).
 int study_command(std::span<const std::string_view> args);
 
-/// `exidel fuzz`: campaigns of a kernel against a reference, on threads and MPI ranks.
+/// `exidel fuzz`: fuzzing campaigns (predicates against a reference, certified
+/// triangulations) on threads and MPI ranks.
 int fuzz_command(std::span<const std::string_view> args);
 
 /// The core of `exidel predicate`, without option parsing: reads queries from `in`, writes

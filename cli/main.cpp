@@ -36,7 +36,7 @@ constexpr std::array commands{
             &exidel::cli::certify_command},
     Command{"study", "failure maps, precision sweeps, triangulation outcomes, adaptive stages",
             &exidel::cli::study_command},
-    Command{"fuzz", "campaigns of a kernel against a reference, on threads and MPI ranks",
+    Command{"fuzz", "fuzzing campaigns (predicates, triangulations) on threads and MPI ranks",
             &exidel::cli::fuzz_command},
 };
 

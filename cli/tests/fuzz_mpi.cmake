@@ -1,5 +1,6 @@
-# ctest -L mpi: `exidel fuzz predicates` under `mpiexec -np 2` gives the summary and the
-# report of a single process (timings aside), and resumes a single process's checkpoint.
+# ctest -L mpi: `exidel fuzz predicates` and `exidel fuzz triangulations` under
+# `mpiexec -np 2` give the summary and the report of a single process (timings aside), and
+# two ranks resume a single process's checkpoint.
 #   cmake -DEXIDEL=<exidel> -DMPIEXEC=<mpiexec> -DWORK=<dir> -P fuzz_mpi.cmake
 # Exits 77 (the test's SKIP_RETURN_CODE) when exidel was built without MPI.
 if(NOT MPIEXEC)
@@ -13,10 +14,10 @@ set(options fuzz predicates -k long-double -n 30000 --seed 11 --reports 5 --no-p
 # Open MPI refuses it unless told).
 set(mpi ${MPIEXEC} -np 2 --oversubscribe --allow-run-as-root)
 
-function(run name)
+# run(<name> <expected exit status> <command...>)
+function(run name expected)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  # 1: disagreements found, which long double against exact has.
-  if(NOT status EQUAL 1)
+  if(NOT status EQUAL expected)
     message(FATAL_ERROR "${name}: exit status ${status}\n${out}\n${err}")
   endif()
   string(REGEX REPLACE "[^\n]*\n$" "" out "${out}")  # the timing line
@@ -38,8 +39,9 @@ function(expect_same a b)
   endif()
 endfunction()
 
-run(solo ${EXIDEL} ${options} -j 2 --summary ${WORK}/solo.json --checkpoint ${WORK}/solo.ckpt --keep-checkpoint)
-run(mpi ${mpi} ${EXIDEL} ${options} --summary ${WORK}/mpi.json --checkpoint ${WORK}/mpi.ckpt)
+# Exit status 1: long double disagrees with exact.
+run(solo 1 ${EXIDEL} ${options} -j 2 --summary ${WORK}/solo.json --checkpoint ${WORK}/solo.ckpt --keep-checkpoint)
+run(mpi 1 ${mpi} ${EXIDEL} ${options} --summary ${WORK}/mpi.json --checkpoint ${WORK}/mpi.ckpt)
 if(NOT mpi_ranks EQUAL 2)
   message(FATAL_ERROR "the MPI run says it ran on ${mpi_ranks} ranks")
 endif()
@@ -57,9 +59,18 @@ foreach(i RANGE 0 14 2)
   list(GET stripes ${i} stripe)
   file(REMOVE ${stripe})
 endforeach()
-run(resumed ${mpi} ${EXIDEL} ${options} --summary ${WORK}/resumed.json --checkpoint ${WORK}/solo.ckpt --resume)
+run(resumed 1 ${mpi} ${EXIDEL} ${options} --summary ${WORK}/resumed.json --checkpoint ${WORK}/solo.ckpt --resume)
 expect_same(solo resumed)
 if(EXISTS ${WORK}/solo.ckpt)
   message(FATAL_ERROR "the finished campaign's checkpoint was not removed")
 endif()
-message("exidel fuzz predicates: 2 MPI ranks gave the single process's summary and report, and resumed its checkpoint")
+
+# Triangulations: every method with the adaptive kernel, certified (exit status 0).
+set(options fuzz triangulations --sets 40 --sizes 3-30 --seed 11 --no-progress)
+run(tsolo 0 ${EXIDEL} ${options} -j 2 --summary ${WORK}/tsolo.json --checkpoint ${WORK}/tsolo.ckpt)
+run(tmpi 0 ${mpi} ${EXIDEL} ${options} --summary ${WORK}/tmpi.json --checkpoint ${WORK}/tmpi.ckpt)
+if(NOT tmpi_ranks EQUAL 2)
+  message(FATAL_ERROR "the MPI run says it ran on ${tmpi_ranks} ranks")
+endif()
+expect_same(tsolo tmpi)
+message("exidel fuzz: 2 MPI ranks gave the single process's summaries and reports, and resumed its checkpoint")

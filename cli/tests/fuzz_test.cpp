@@ -36,6 +36,11 @@ std::string fuzz(const std::string& options, const std::string& name) {
            work_path(name + ".json") + "' " + options;
 }
 
+std::string fuzz_t(const std::string& options, const std::string& name) {
+    return "fuzz triangulations --no-progress --checkpoint '" + work_path(name + ".ckpt") + "' --summary '" +
+           work_path(name + ".json") + "' " + options;
+}
+
 TEST(ExidelFuzz, AdaptiveAgreesWithExactAndEveryQueryIsCounted) {
     const auto r = run_exidel("fuzz_ok", fuzz("-n 26000 --seed 7 -j 2", "ok"), "");
     ASSERT_EQ(r.status, 0) << r.err;
@@ -169,7 +174,7 @@ TEST(ExidelFuzz, BadOptionsAreUsageErrors) {
                           Case{"fuzz predicates --predicates orient3d", "unknown predicate 'orient3d'"},
                           Case{"fuzz predicates --no-checkpoint --resume", "--no-checkpoint with --resume"},
                           Case{"fuzz predicates --resume --checkpoint nowhere-at-all", "no campaign to resume"},
-                          Case{"fuzz triangles", "unknown campaign 'triangles'"}}) {
+                          Case{"fuzz triangles", "unknown campaign 'triangles' (predicates or triangulations)"}}) {
         const auto r = run_exidel("fuzz_bad", c.args, "");
         EXPECT_EQ(r.status, 2) << c.args;
         EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
@@ -184,6 +189,99 @@ TEST(ExidelFuzz, AQueryCountInExponentForm) {
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(read_json(work_path("exp.json"))["queries"], 2500);
     EXPECT_EQ(read_json(work_path("exp.json"))["families"].size(), 1u);
+}
+
+// ---------------------------------------------------------------------------------
+// exidel fuzz triangulations
+
+TEST(ExidelFuzzTriangulations, EveryMethodCertifiesWithTheAdaptiveKernel) {
+    const auto one = run_exidel("fuzzt_j1", fuzz_t("--sets 52 --sizes 3-40 -j 1", "t1"), "");
+    ASSERT_EQ(one.status, 0) << one.err;
+    const Json j = read_json(work_path("t1.json"));
+    const std::size_t methods = j["methods"].size();
+    EXPECT_GE(methods, 9u);  // the external algorithm in three orders, six others
+    EXPECT_EQ(j["policies"].size(), 2u);
+    EXPECT_EQ(j["triangulations"], 52 * methods * 2);
+    EXPECT_EQ(j["outcomes"]["delaunay"], j["triangulations"]);
+    EXPECT_EQ(j["wrong"], 0);
+    EXPECT_EQ(j["problems"], 0);
+    for (const auto& [name, f] : j["families"].items()) EXPECT_EQ(f["triangulations"], 4 * methods * 2) << name;
+    for (const auto& [name, m] : j["methods"].items()) EXPECT_EQ(m["triangulations"], 52 * 2) << name;
+    EXPECT_TRUE(j["reported"].empty());
+    // The same campaign on two threads.
+    const auto two = run_exidel("fuzzt_j2", fuzz_t("--sets 52 --sizes 3-40 -j 2", "t2"), "");
+    ASSERT_EQ(two.status, 0) << two.err;
+    EXPECT_EQ(timeless(j), timeless(read_json(work_path("t2.json"))));
+    EXPECT_EQ(without_last_line(one.out), without_last_line(two.out));
+}
+
+/// The command of a fixture's "reproduce:" header line, with FILE replaced by its path.
+std::string replay_command(const std::string& path) {
+    std::istringstream in(exidel::cli_test::slurp(path));
+    const std::string prefix = "# reproduce: exidel ";
+    for (std::string line; std::getline(in, line);) {
+        if (!line.starts_with(prefix)) continue;
+        std::string command = line.substr(prefix.size());
+        command.replace(command.find("FILE"), 4, "'" + path + "'");
+        return command;
+    }
+    return {};
+}
+
+TEST(ExidelFuzzTriangulations, WrongOutcomesOfTheDoubleKernelBecomeFixturesThatReplay) {
+    const std::string out = work_path("t-fixtures");
+    std::filesystem::remove_all(out);
+    const auto r = run_exidel("fuzzt_double",
+                              fuzz_t("-k double --families near_lattice_circle,near_rounded_circle --sets 60 "
+                                     "--sizes 20-60 --reports 3 --out '" + out + "'",
+                                     "tdouble"),
+                              "");
+    const Json j = read_json(work_path("tdouble.json"));
+    ASSERT_GT(j["wrong"].get<std::uint64_t>(), 3u) << r.out;
+    // An inexact kernel's wrong outcomes are expected; only a guard (a hang) is a problem.
+    EXPECT_EQ(j["problems"], j["outcomes"]["guard"]);
+    EXPECT_EQ(r.status, j["problems"] == 0 ? 0 : 1) << r.err;
+    ASSERT_EQ(j["reported"].size(), 3u);
+    for (const Json& f : j["reported"]) {
+        const std::string path = out + "/" + f["file"].get<std::string>();
+        ASSERT_TRUE(exidel::cli_test::exists(path)) << path;
+        EXPECT_LE(f["shrunk_points"].get<std::size_t>(), f["points"].get<std::size_t>());
+        EXPECT_EQ(f["shrunk_outcome"], f["outcome"]);
+        // The fixture's own command reproduces the wrong outcome (exit status 1: a failed
+        // triangulation, or --certify's finding), and the exact kernel certifies it.
+        const std::string command = replay_command(path);
+        ASSERT_FALSE(command.empty()) << path;
+        EXPECT_EQ(run_exidel("fuzzt_replay", command, "").status, 1) << command;
+        std::string exact = command;
+        exact.replace(exact.find("--kernel double"), 15, "--kernel exact");
+        EXPECT_EQ(run_exidel("fuzzt_replay_exact", exact, "").status, 0) << exact;
+    }
+}
+
+TEST(ExidelFuzzTriangulations, BadOptionsAreUsageErrors) {
+    struct Case {
+        const char* args;
+        const char* message;
+    };
+    for (const Case& c : {Case{"fuzz triangulations --sizes 10-5", "1 <= MIN <= MAX"},
+                          Case{"fuzz triangulations --sizes 0-5", "1 <= MIN <= MAX"},
+                          Case{"fuzz triangulations --sizes ten", "--sizes takes MIN-MAX"},
+                          Case{"fuzz triangulations --sizes 3-1000000", "up to 100000 points"},
+                          Case{"fuzz triangulations --incircle circle", "--incircle takes determinant, cosine"},
+                          Case{"fuzz triangulations --algorithms quickhull", "quickhull"},
+                          Case{"fuzz triangulations --orders spiral", "spiral"},
+                          Case{"fuzz triangulations -n 0", "--sets takes a whole number"},
+                          Case{"fuzz triangulations --kernel mpfr:0", "mpfr"}}) {
+        const auto r = run_exidel("fuzzt_bad", c.args, "");
+        EXPECT_EQ(r.status, 2) << c.args;
+        EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
+    }
+    const auto help = run_exidel("fuzzt_help", "fuzz triangulations --help", "");
+    EXPECT_EQ(help.status, 0);
+    EXPECT_NE(help.out.find("guard (more than 64 n^2 + 10^6 predicate calls"), std::string::npos);
+    const auto overview = run_exidel("fuzz_overview", "fuzz --help", "");
+    EXPECT_EQ(overview.status, 0);
+    EXPECT_NE(overview.out.find("exidel fuzz triangulations [options]"), std::string::npos);
 }
 
 }  // namespace

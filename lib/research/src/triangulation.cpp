@@ -62,10 +62,6 @@ struct GuardedKernel {
 };
 static_assert(PredicateKernel<GuardedKernel<DoubleKernel>>);
 
-std::string_view policy_name(delaunay::InCirclePolicy p) {
-    return p == delaunay::InCirclePolicy::cosine ? "cosine" : "determinant";
-}
-
 constexpr delaunay::InCirclePolicy both_policies[] = {delaunay::InCirclePolicy::determinant,
                                                       delaunay::InCirclePolicy::cosine};
 
@@ -89,12 +85,6 @@ std::string algorithm_flag(const Method& m) {
 std::string replay_order_flags(const Method& m) {
     if (!is_external(m)) return algorithm_flag(m);
     return is_paper_order(m) ? "" : " --order " + std::string(delaunay::to_string(m.order));
-}
-std::string triangulate_order_flags(const Method& m) {
-    if (!is_external(m)) return algorithm_flag(m);
-    std::string flags = " --order " + std::string(delaunay::to_string(m.order));
-    if (m.order == delaunay::Strategy::strips) flags += " --strip-points " + std::to_string(study_strip_points);
-    return flags;
 }
 
 /// value / points with two decimals ("-" for no points).
@@ -166,6 +156,17 @@ std::string describe(const Classification& c) {
 }
 
 }  // namespace
+
+std::string_view policy_name(delaunay::InCirclePolicy p) {
+    return p == delaunay::InCirclePolicy::cosine ? "cosine" : "determinant";
+}
+
+std::string triangulate_order_flags(const Method& m) {
+    if (!is_external(m)) return algorithm_flag(m);
+    std::string flags = " --order " + std::string(delaunay::to_string(m.order));
+    if (m.order == delaunay::Strategy::strips) flags += " --strip-points " + std::to_string(study_strip_points);
+    return flags;
+}
 
 std::string_view to_string(Outcome o) noexcept {
     switch (o) {

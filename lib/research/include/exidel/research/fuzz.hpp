@@ -32,8 +32,10 @@
 #include <string>
 #include <vector>
 
+#include "exidel/delaunay/algorithms.hpp"
 #include "exidel/predicates/predicate.hpp"
 #include "exidel/predicates/types.hpp"
+#include "exidel/research/studies.hpp"
 #include "exidel/testing/families.hpp"
 
 namespace exidel::research {
@@ -121,6 +123,76 @@ PredicateFuzzResult fuzz_predicates(const PredicateFuzzOptions& options, Team& t
 /// predicate the counts, the reported disagreements, and (the only members that differ
 /// between runs of the same campaign) "seconds" and "run".
 std::string summary_json(const PredicateFuzzResult& result);
+
+// ---------------------------------------------------------------------------------
+// exidel fuzz triangulations.
+//
+// Point set s (of N) has family families[s % F], a size drawn from [min_points,
+// max_points] by the stream derive_seed(seed, {fuzz id, s, 1}), and its points from
+// testing::gen_points at derive_seed(seed, {fuzz id, s}). Each set is triangulated by
+// every method (an algorithm of the registry, the external one in each order asked for)
+// under each in-circle policy, with the kernel asked for, and every result is certified
+// exactly (classify_triangulation: the exact certifier, and a budget of predicate calls
+// that turns a hang into the outcome "guard"). Unit k of the campaign is run
+// k mod (methods x policies) of set k / (methods x policies).
+
+struct TriangulationFuzzOptions {
+    std::string kernel = "adaptive";
+    std::vector<testing::Family> families;            ///< empty: every family
+    std::vector<delaunay::Algorithm> algorithms;      ///< empty: every algorithm
+    std::vector<delaunay::Strategy> orders;           ///< the external algorithm's; empty: all_orders
+    std::vector<delaunay::InCirclePolicy> policies;   ///< empty: determinant and cosine
+    std::size_t min_points = 3, max_points = 100;
+    std::uint64_t sets = 10'000;
+    std::uint64_t seed = 20250704;
+    std::size_t max_reports = 20;  ///< wrong outcomes shrunk into fixtures (all are counted)
+    std::filesystem::path out;     ///< where the fixtures go; empty: not written
+    std::filesystem::path checkpoint;
+    bool resume = false;
+    unsigned jobs = 1;
+    bool progress = true;
+};
+
+/// A triangulation that did not certify (or, with any kernel, exceeded its call budget),
+/// shrunk by delta debugging to a set from which no single point can be removed.
+struct TriangulationFinding {
+    std::uint64_t index = 0;  ///< its unit number
+    testing::Family family{};
+    Method method;
+    delaunay::InCirclePolicy policy{};
+    Classification outcome;           ///< of the set as drawn
+    std::size_t points = 0;           ///< size of the set as drawn
+    std::vector<Point2> shrunk;
+    Classification shrunk_outcome;
+    std::string file;  ///< the fixture, relative to options.out (empty: not written)
+};
+
+struct TriangulationFuzzResult {
+    TriangulationFuzzOptions options;  ///< with every list filled in
+    std::vector<Method> methods;
+    /// counts[((f * methods + m) * policies + p) * outcomes + o]: runs of family f, method
+    /// m, policy options.policies[p] that ended in all_outcomes[o].
+    std::vector<std::uint64_t> counts;
+    std::uint64_t triangulations = 0;
+    std::uint64_t wrong = 0;     ///< runs with any outcome but delaunay
+    std::uint64_t problems = 0;  ///< what must not happen: wrong with an exact kernel; guard always
+    std::vector<TriangulationFinding> reported;
+    double seconds = 0;
+    std::uint64_t resumed = 0;
+    int ranks = 1;
+    std::string commit;
+};
+
+/// A method's name in summaries and fixture names: "lawson", "external-strips", ...
+std::string method_label(const Method& m);
+
+/// Runs the campaign on `team`; the result (and the fixture files) on rank 0, as
+/// fuzz_predicates.
+TriangulationFuzzResult fuzz_triangulations(const TriangulationFuzzOptions& options, Team& team = Team::solo());
+
+/// The summary as JSON: "triangulations", "wrong", "problems", the outcomes per family,
+/// per method and per policy, the fixtures, and "seconds" and "run".
+std::string summary_json(const TriangulationFuzzResult& result);
 
 /// One line of `exidel predicate`'s input format, coordinates as C99 hex floats (exact).
 std::string query_line(Predicate p, std::span<const Point2> points);

@@ -196,6 +196,13 @@ std::vector<delaunay::Algorithm> parse_algorithms(std::string_view list);
 /// order given, repeats dropped. Throws std::invalid_argument naming the spellings.
 std::vector<delaunay::Strategy> parse_orders(std::string_view list);
 
+/// "determinant" or "cosine", as --incircle spells them.
+std::string_view policy_name(delaunay::InCirclePolicy p);
+
+/// The options of `exidel triangulate` that run `method` as the studies do (" --order
+/// strips --strip-points 64", " --algorithm lawson", ...), each after a space.
+std::string triangulate_order_flags(const Method& m);
+
 /// Triangulates `points` with `kernel`, `policy` and `method` (study_options; at most
 /// call_budget predicate calls, 0 meaning 64 n^2 + 10^6) and certifies the result
 /// exactly.
