@@ -285,6 +285,19 @@ struct Common {
         return std::nullopt;
     }
 
+    /// Copies the options into a campaign's (after check()).
+    template <class Options>
+    void apply(Options& o) const {
+        o.kernel = kernel;
+        o.families = families;
+        o.seed = seed;
+        o.jobs = *jobs;
+        if (reports) o.max_reports = *reports;
+        o.checkpoint = checkpoint;
+        o.resume = resume;
+        o.progress = progress;
+    }
+
     /// Writes the summary (rank 0) and removes the finished campaign's checkpoint.
     int finish(const std::string& command, const std::string& json, bool found) const {
         if (summary) {
@@ -334,14 +347,7 @@ int fuzz_predicates_command(std::span<const std::string_view> args, Team& team) 
     if (const auto error = common.check(team)) return cli.usage_error(*error);
     std::string error;
     if (!parse_kernel(o.reference, error)) return cli.usage_error(error);
-    o.kernel = common.kernel;
-    o.families = common.families;
-    o.seed = common.seed;
-    o.jobs = *common.jobs;
-    if (common.reports) o.max_reports = *common.reports;
-    o.checkpoint = common.checkpoint;
-    o.resume = common.resume;
-    o.progress = common.progress;
+    common.apply(o);
 
     research::PredicateFuzzResult r;
     if (auto status = guarded(cli, "fuzz predicates", team, [&] { r = research::fuzz_predicates(o, team); })) {
@@ -449,14 +455,7 @@ int fuzz_triangulations_command(std::span<const std::string_view> args, Team& te
     cli.app.add_option_function<std::string>("--out", [&o](const std::string& v) { o.out = v; });
     if (const std::optional<int> status = cli.parse(args)) return *status;
     if (const auto error = common.check(team)) return cli.usage_error(*error);
-    o.kernel = common.kernel;
-    o.families = common.families;
-    o.seed = common.seed;
-    o.jobs = *common.jobs;
-    if (common.reports) o.max_reports = *common.reports;
-    o.checkpoint = common.checkpoint;
-    o.resume = common.resume;
-    o.progress = common.progress;
+    common.apply(o);
 
     research::TriangulationFuzzResult r;
     if (auto status = guarded(cli, "fuzz triangulations", team, [&] { r = research::fuzz_triangulations(o, team); })) {

@@ -77,6 +77,19 @@ struct Spec {
     std::function<Partial(std::uint64_t block)> run_block;
 };
 
+/// A Spec with what every campaign's options carry (max_reports, checkpoint, resume, jobs,
+/// progress); the campaign adds its label, identity, layout, counts and block.
+template <class Options>
+Spec spec_from(const Options& o) {
+    Spec s;
+    s.max_findings = o.max_reports;
+    s.checkpoint = o.checkpoint;
+    s.resume = o.resume;
+    s.jobs = o.jobs;
+    s.progress = o.progress;
+    return s;
+}
+
 struct Outcome {
     Partial all;                  ///< rank 0: every rank's; other ranks: empty
     std::uint64_t resumed = 0;    ///< units read back from the checkpoint

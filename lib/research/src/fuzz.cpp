@@ -247,16 +247,11 @@ std::string campaign_text(const Campaign& c) {
 
 PredicateFuzzResult fuzz_predicates(const PredicateFuzzOptions& options, Team& team) {
     const Campaign c(options);
-    campaign::Spec spec;
+    campaign::Spec spec = campaign::spec_from(c.options);
     spec.label = "fuzz predicates";
     spec.identity = campaign_text(c);
     spec.layout = c.layout;
     spec.counts = c.family_count() * c.predicate_count() * 2;
-    spec.max_findings = c.options.max_reports;
-    spec.checkpoint = c.options.checkpoint;
-    spec.resume = c.options.resume;
-    spec.jobs = c.options.jobs;
-    spec.progress = c.options.progress;
     spec.run_block = [&c](std::uint64_t block) { return run_block(c, block); };
     const campaign::Outcome outcome = campaign::run(spec, team);
 

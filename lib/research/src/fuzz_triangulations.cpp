@@ -161,16 +161,11 @@ std::string method_label(const Method& m) {
 
 TriangulationFuzzResult fuzz_triangulations(const TriangulationFuzzOptions& options, Team& team) {
     const Campaign c(options);
-    campaign::Spec spec;
+    campaign::Spec spec = campaign::spec_from(c.options);
     spec.label = "fuzz triangulations";
     spec.identity = campaign_text(c);
     spec.layout = c.layout;
     spec.counts = c.options.families.size() * c.runs_per_set() * outcome_count;
-    spec.max_findings = c.options.max_reports;
-    spec.checkpoint = c.options.checkpoint;
-    spec.resume = c.options.resume;
-    spec.jobs = c.options.jobs;
-    spec.progress = c.options.progress;
     spec.run_block = [&c](std::uint64_t set) { return run_block(c, set); };
     const campaign::Outcome outcome = campaign::run(spec, team);
 
