@@ -94,8 +94,22 @@ void Progress::draw(std::size_t done) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     std::string bar(static_cast<std::size_t>(filled), '#');
     bar.resize(width, '.');
-    std::fprintf(stderr, "\r%s [%s] %zu/%zu  %.0f s ", label_.c_str(), bar.c_str(), done, total_,
-                 elapsed);
+    // The rate so far, and the time left at that rate (a campaign of 10^9 queries runs
+    // for most of an hour).
+    const double rate = elapsed > 0 ? double(done) / elapsed : 0;
+    char eta[32] = "?";
+    if (rate > 0) {
+        const auto left = static_cast<long long>(double(total_ - done) / rate);
+        if (left >= 3600) {
+            std::snprintf(eta, sizeof eta, "%lldh%02lldm", left / 3600, left / 60 % 60);
+        } else if (left >= 60) {
+            std::snprintf(eta, sizeof eta, "%lldm%02llds", left / 60, left % 60);
+        } else {
+            std::snprintf(eta, sizeof eta, "%llds", left);
+        }
+    }
+    std::fprintf(stderr, "\r%s [%s] %zu/%zu  %.3g/s  %.0f s, %s left   ", label_.c_str(), bar.c_str(), done,
+                 total_, rate, elapsed, eta);
     std::fflush(stderr);
     drawn_ = true;
 }

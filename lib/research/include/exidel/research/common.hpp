@@ -88,7 +88,7 @@ std::string shell_quote(std::string_view s);
 // ---------------------------------------------------------------------------------
 // Progress bar.
 
-/// A one-line progress bar on stderr. Drawn only when stderr is a terminal, progress is
+/// A one-line progress bar on stderr: done/total, the rate so far and the time left at it. Drawn only when stderr is a terminal, progress is
 /// allowed, and the work has already taken a second (short runs stay silent). advance()
 /// is thread-safe and cheap: redraws are limited to ten per second.
 class Progress {
