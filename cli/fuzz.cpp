@@ -481,8 +481,8 @@ int fuzz_command(std::span<const std::string_view> args) {
         std::cerr << "exidel fuzz: unknown campaign '" << args[0] << "' (predicates or triangulations)\n";
         return exit_usage;
     }
-    std::unique_ptr<Team> team = join_team();
-    return run(args.subspan(1), *team);
+    Membership membership = join_team();
+    return run(args.subspan(1), membership.team());
 }
 
 }  // namespace exidel::cli

@@ -76,9 +76,9 @@ private:
 
 }  // namespace
 
-std::unique_ptr<Team> join_team() {
-    if (!launched_by_mpi()) return make_solo_team();
-    return std::make_unique<MpiTeam>();
+Membership join_team() {
+    if (!launched_by_mpi()) return {};
+    return Membership(std::make_unique<MpiTeam>());
 }
 
 }  // namespace exidel::cli

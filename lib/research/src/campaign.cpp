@@ -177,7 +177,7 @@ std::pair<Partial, std::uint64_t> run_rank(const Spec& spec, Team& team) {
     Partial mine;
     mine.counts.resize(spec.counts);
     std::uint64_t resumed = 0;
-    std::vector<std::uint64_t> todo;
+    std::vector<std::uint64_t> pending;
     const Layout& layout = spec.layout;
     for (std::uint64_t s = std::uint64_t(team.rank()); s < layout.stripes; s += std::uint64_t(team.size())) {
         if (spec.resume) {
@@ -190,12 +190,12 @@ std::pair<Partial, std::uint64_t> run_rank(const Spec& spec, Team& team) {
                 }
             }
         }
-        todo.push_back(s);
+        pending.push_back(s);
     }
     std::uint64_t work = 0;
-    for (std::uint64_t s : todo) work += layout.units_in_stripe(s);
+    for (std::uint64_t s : pending) work += layout.units_in_stripe(s);
     Progress progress(spec.label, work, spec.progress && team.rank() == 0);
-    for (std::uint64_t s : todo) {
+    for (std::uint64_t s : pending) {
         const Partial p = run_stripe(spec, s, progress);
         if (!spec.checkpoint.empty()) write_atomically(stripe_path(spec.checkpoint, s), serialize(p, 0));
         mine.add(p, spec.max_findings);

@@ -90,6 +90,21 @@ Spec spec_from(const Options& o) {
     return s;
 }
 
+/// The members that close every campaign's JSON summary: the report limit, the build, the
+/// time and how the run was split. `unit` names what the campaign counts ("queries",
+/// "triangulations"); the rate leaves out the units read back from a checkpoint.
+template <class Json>
+void close_summary(Json& j, std::size_t max_reports, const std::string& commit, double seconds, int ranks,
+                   unsigned jobs, const std::string& unit, std::uint64_t units, std::uint64_t resumed) {
+    j["max_reports"] = max_reports;
+    j["exidel"] = commit;
+    j["seconds"] = seconds;
+    j["run"] = Json{{"ranks", ranks},
+                    {"threads_per_rank", jobs},
+                    {unit + "_per_second", seconds > 0 ? double(units - resumed) / seconds : 0.0},
+                    {"resumed_" + unit, resumed}};
+}
+
 struct Outcome {
     Partial all;                  ///< rank 0: every rank's; other ranks: empty
     std::uint64_t resumed = 0;    ///< units read back from the checkpoint

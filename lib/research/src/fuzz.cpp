@@ -316,13 +316,8 @@ std::string summary_json(const PredicateFuzzResult& r) {
                             {"shrink_steps", d.shrink_steps}});
     }
     j["reported"] = std::move(reported);
-    j["max_reports"] = o.max_reports;
-    j["exidel"] = r.commit;
-    j["seconds"] = r.seconds;
-    j["run"] = {{"ranks", r.ranks},
-                {"threads_per_rank", o.jobs},
-                {"queries_per_second", r.seconds > 0 ? double(r.total.queries - r.resumed_queries) / r.seconds : 0.0},
-                {"resumed_queries", r.resumed_queries}};
+    campaign::close_summary(j, o.max_reports, r.commit, r.seconds, r.ranks, o.jobs, "queries", r.total.queries,
+                            r.resumed_queries);
     return j.dump(2) + "\n";
 }
 

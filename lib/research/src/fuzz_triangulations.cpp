@@ -255,14 +255,8 @@ std::string summary_json(const TriangulationFuzzResult& r) {
                             {"file", f.file}});
     }
     j["reported"] = std::move(reported);
-    j["max_reports"] = o.max_reports;
-    j["exidel"] = r.commit;
-    j["seconds"] = r.seconds;
-    j["run"] = {{"ranks", r.ranks},
-                {"threads_per_rank", o.jobs},
-                {"triangulations_per_second",
-                 r.seconds > 0 ? double(r.triangulations - r.resumed) / r.seconds : 0.0},
-                {"resumed_triangulations", r.resumed}};
+    campaign::close_summary(j, o.max_reports, r.commit, r.seconds, r.ranks, o.jobs, "triangulations",
+                            r.triangulations, r.resumed);
     return j.dump(2) + "\n";
 }
 
