@@ -260,7 +260,14 @@ private:
         }
 
         // The boundary must be one simple cycle: each vertex starts exactly one edge, and
-        // following the edges from the first returns to it after all of them.
+        // following the edges from the first returns to it after all of them. An inexact
+        // kernel can put every triangle of the sphere in conflict (p beyond every hull edge
+        // and inside every circumcircle), which leaves no boundary at all (found by the
+        // libFuzzer harness, fuzz/corpus/triangulate/double_bowyer_watson_whole_sphere.raw).
+        if (boundary_.empty()) {
+            return fail(FailureKind::cavity_inconsistent, i,
+                        "every triangle conflicts with the point: the cavity is the whole sphere");
+        }
         for (const Edge& b : boundary_) {
             if (vertex_stamp_[b.u] == stamp_) {
                 return fail(FailureKind::cavity_inconsistent, i,
