@@ -172,4 +172,47 @@ TEST(BowyerWatson, AKernelThatLiesGivesATypedFailureOrAResult) {
     EXPECT_FALSE(kinds.empty());  // noise is caught, not only survived
 }
 
+// A kernel exact on every question but those about one point, the liar, which it puts
+// strictly beyond every hull edge (orient2d positive) and inside every circle (in-circle
+// positive): the liar's cavity is then the whole sphere and has no boundary edge. The
+// libFuzzer harness met this with the double kernel (fuzz/corpus/triangulate/
+// double_bowyer_watson_whole_sphere.raw); the boundary check then read the first edge of
+// an empty list.
+struct WholeSphereKernel {
+    static constexpr bool is_exact = false;
+    static std::string name() { return "whole-sphere"; }
+    Point2 liar;
+    bool lies(Point2 p) const { return p.x == liar.x && p.y == liar.y; }
+    Sign orient2d(Point2 a, Point2 b, Point2 c) const {
+        return lies(c) ? Sign::positive : AdaptiveKernel{}.orient2d(a, b, c);
+    }
+    Sign incircle(Point2 a, Point2 b, Point2 c, Point2 d) const {
+        return lies(d) ? Sign::positive : AdaptiveKernel{}.incircle(a, b, c, d);
+    }
+    Sign incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d) const {
+        return lies(d) ? Sign::positive : AdaptiveKernel{}.incircle_cosine(a, b, c, d);
+    }
+    Sign compare_distance(Point2 a, Point2 b, Point2 c) const { return AdaptiveKernel{}.compare_distance(a, b, c); }
+};
+
+TEST(BowyerWatsonRegression, ACavityOfTheWholeSphereIsATypedFailure) {
+    std::mt19937_64 rng(23);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::vector<Point2> pts(16);
+    for (Point2& p : pts) p = {u(rng), u(rng)};
+    for (InCirclePolicy policy : {InCirclePolicy::determinant, InCirclePolicy::cosine}) {
+        std::size_t whole_sphere = 0;
+        for (const Point2& liar : pts) {
+            const Result r = triangulate(pts, WholeSphereKernel{liar}, bw(policy));
+            // Unless the liar is one of the first triangle's corners, its insertion finds
+            // every triangle in conflict.
+            if (!r.ok() && r.failure->kind == FailureKind::cavity_inconsistent &&
+                r.failure->message.find("the cavity is the whole sphere") != std::string::npos) {
+                ++whole_sphere;
+            }
+        }
+        EXPECT_GE(whole_sphere, pts.size() - 3);
+    }
+}
+
 }  // namespace
