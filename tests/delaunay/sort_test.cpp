@@ -100,8 +100,12 @@ RC_GTEST_PROP(SortAndDedupe, EqualsComparisonSortWithFirstOccurrenceKept, ()) {
         if (pts[a].y != pts[b].y) return pts[a].y < pts[b].y;
         return a < b;
     });
+    // Chunks from one point up (many chunks, runs of a bucket across their borders) and
+    // one to three threads: the result must not depend on either.
+    const auto threads = *rc::gen::inRange(1u, 4u);
+    const auto chunk = *rc::gen::elementOf(std::vector<std::size_t>{1, 7, 64, 1000, 1 << 16});
     SortedInput in;
-    RC_ASSERT(!sort_and_dedupe(pts, in));
+    RC_ASSERT(!sort_and_dedupe(pts, in, threads, chunk));
     std::size_t k = 0;  // position in in.points
     std::vector<std::uint32_t> duplicates;
     for (std::size_t j = 0; j < expected.size(); ++j) {
@@ -120,6 +124,24 @@ RC_GTEST_PROP(SortAndDedupe, EqualsComparisonSortWithFirstOccurrenceKept, ()) {
     RC_ASSERT(k == in.points.size());
     std::sort(duplicates.begin(), duplicates.end());
     RC_ASSERT(duplicates == in.duplicates);
+}
+
+TEST(SortAndDedupe, NamesTheFirstNonFiniteCoordinateWhateverTheChunksAndThreads) {
+    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    std::vector<Point2> pts(40, Point2{1, 2});
+    pts[23] = {nan, 0};
+    pts[9] = {0, -inf};
+    pts[31] = {inf, inf};
+    for (const std::size_t chunk : {1, 3, 8, 10, 64}) {
+        for (const unsigned threads : {1u, 2u, 3u}) {
+            SortedInput in;
+            const auto failure = sort_and_dedupe(pts, in, threads, chunk);
+            ASSERT_TRUE(failure.has_value());
+            EXPECT_EQ(failure->kind, exidel::delaunay::FailureKind::non_finite_input);
+            EXPECT_EQ(failure->input_index, 9u) << "chunk " << chunk << ", threads " << threads;
+        }
+    }
 }
 
 RC_GTEST_PROP(RadialOrder, IsAscendingExactDistanceTiesByPosition, ()) {

@@ -201,8 +201,11 @@ struct SortedInput {
 inline constexpr std::size_t max_points = 350'000'000;
 
 /// Rejects non-finite coordinates (naming the first bad index) and oversized input
-/// before any other work, then sorts and removes duplicates.
-std::optional<Failure> sort_and_dedupe(std::span<const Point2> input, SortedInput& out);
+/// before any other work, then sorts and removes duplicates, on `threads` threads over
+/// chunks of `chunk` points (tests make them small). The result depends on neither.
+std::optional<Failure> sort_and_dedupe(std::span<const Point2> input, SortedInput& out,
+                                       unsigned threads = 1,
+                                       std::size_t chunk = std::size_t{1} << 16);
 
 }  // namespace detail
 

@@ -60,7 +60,7 @@ Result run_algorithm(const K& kernel, SortedInput& in, const Options& options) {
             result.failure = to_triangulation(
                 out.mesh, out.input_of.empty() ? std::span<const std::uint32_t>(in.input_of)
                                                : std::span<const std::uint32_t>(out.input_of),
-                out.first, tri);
+                out.first, tri, options.threads);
         }
     }
     tri.vertex_of_input = std::move(in.vertex_of_input);
@@ -82,7 +82,7 @@ Result run_algorithm(const K& kernel, SortedInput& in, const Options& options) {
 template <Instrumentation I = Instrumentation::off, PredicateKernel K>
 Result triangulate(std::span<const Point2> points, const K& kernel, const Options& options = {}) {
     detail::SortedInput input;
-    if (auto failure = detail::sort_and_dedupe(points, input)) {
+    if (auto failure = detail::sort_and_dedupe(points, input, options.threads)) {
         Result r;
         r.algorithm = options.algorithm;
         r.failure = std::move(failure);

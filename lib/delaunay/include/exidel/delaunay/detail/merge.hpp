@@ -66,7 +66,7 @@ public:
     /// what it marks). Merges of disjoint pieces touch disjoint parts of all three, so
     /// they may run in parallel.
     Merger(const K& kernel, std::span<const Point2> points, Mesh& mesh,
-           std::vector<std::uint8_t>& gone)
+           std::span<std::uint8_t> gone)
         : k_(kernel), pts_(points), m_(mesh), gone_(gone) {}
 
     /// Merges R into L (L.end == R.first). `l0` and `r0`: L's largest and R's smallest
@@ -360,7 +360,7 @@ private:
     const K& k_;
     std::span<const Point2> pts_;
     Mesh& m_;
-    std::vector<std::uint8_t>& gone_;
+    std::span<std::uint8_t> gone_;
     Piece* L_ = nullptr;
     Piece* R_ = nullptr;
     std::vector<Step> steps_;

@@ -107,8 +107,9 @@ struct MeshOutput {
 /// Writes `mesh` (vertex ids; dead slots allowed) as a Triangulation of input indices,
 /// `input_of[id]`, with the hull starting at id `first` (the lexicographically smallest
 /// point, always a hull vertex). Live triangles keep their relative order. Consumes the
-/// mesh's triangle arrays.
+/// mesh's triangle arrays. `threads` share the work; the result does not depend on it.
 std::optional<Failure> to_triangulation(Mesh& mesh, std::span<const std::uint32_t> input_of,
-                                        std::uint32_t first, Triangulation& tri);
+                                        std::uint32_t first, Triangulation& tri,
+                                        unsigned threads = 1);
 
 }  // namespace exidel::delaunay::detail

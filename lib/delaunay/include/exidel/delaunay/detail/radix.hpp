@@ -13,6 +13,8 @@
 #include <utility>
 #include <vector>
 
+#include "exidel/delaunay/detail/memory.hpp"
+
 namespace exidel::delaunay::detail {
 
 struct KeyIndex {
@@ -49,7 +51,8 @@ inline void radix_sort(std::vector<KeyIndex>& v) {
     for (const KeyIndex& r : v) {
         for (unsigned p = 0; p < passes; ++p) ++count[p][digit(r.key, p)];
     }
-    std::vector<KeyIndex> buffer(v.size());
+    std::vector<KeyIndex> buffer;
+    resize_fresh(buffer, v.size());
     std::span<KeyIndex> from(v), to(buffer);
     for (unsigned p = 0; p < passes; ++p) {
         auto& c = count[p];

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "exidel/delaunay/detail/builder.hpp"
+#include "exidel/delaunay/detail/memory.hpp"
 #include "exidel/delaunay/detail/merge.hpp"
 #include "exidel/delaunay/detail/radial.hpp"
 #include "exidel/delaunay/parallel.hpp"
@@ -132,11 +133,11 @@ std::optional<Failure> build_strips(const K& kernel, std::span<const Point2> pts
     const std::size_t n = pts.size();
     const std::size_t strips = cuts.size() - 1;
     mesh = Mesh{};
-    mesh.triangles.assign(6 * n, dead);
-    mesh.halfedges.assign(6 * n, -1);
-    mesh.hull_next.assign(n, dead);
-    mesh.hull_prev.assign(n, dead);
-    mesh.hull_edge.assign(n, -1);
+    assign_fresh(mesh.triangles, 6 * n, dead);
+    assign_fresh(mesh.halfedges, 6 * n, -1);
+    assign_fresh(mesh.hull_next, n, dead);
+    assign_fresh(mesh.hull_prev, n, dead);
+    assign_fresh(mesh.hull_edge, n, -1);
     std::vector<Piece> pieces(strips);
 
     auto build_strip = [&](std::size_t s, Counters& into) {
@@ -144,7 +145,9 @@ std::optional<Failure> build_strips(const K& kernel, std::span<const Point2> pts
                                     into);
     };
 
-    std::vector<std::uint8_t> gone(6 * n, 0);
+    // Zero pages from calloc: a merge reads and marks only the few slots along its seam.
+    const auto gone_bytes = allocate_zeroed<std::uint8_t>(6 * n);
+    const std::span<std::uint8_t> gone(gone_bytes.get(), 6 * n);
     auto merge = [&](std::size_t left, std::size_t right, Counters& into) {
         Merger<K, I> merger(kernel, pts, mesh, gone);
         auto failure = merger.merge(pieces[left], pieces[right]);
