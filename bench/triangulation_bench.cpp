@@ -29,6 +29,12 @@
 //                 malloc_usable_size of each block, so allocator rounding is included.
 //                 Not seen: GMP's own malloc calls (exact kernel) and thread stacks. The
 //                 input vector exists before the run and is not counted.
+// Every benchmark run starts from the same allocator state: malloc_trim(0) before the
+// timed loop returns every free page of the heap to the kernel. Without it a run inherits
+// whatever the runs before it left mapped, and the order of the runs moved the times by
+// up to 25% (CGAL after an exidel run: 800 to 990 ms, alone 880 ms; issue 17,
+// docs/measurements.md "Fresh memory"). With it, every implementation's first touch of
+// its memory is a page fault, as in a process that triangulates once.
 // The benchmark certifies nothing (tests/ does); it only checks Result::ok() and reports
 // a failure with SkipWithError.
 //
@@ -277,6 +283,7 @@ void exidel_bench(benchmark::State& state, const std::string& name, const std::s
         state.SkipWithError(("triangulation failed: " + u.failure).c_str());
         return;
     }
+    malloc_trim(0);
     for (auto _ : state) {
         delaunay::Result r = delaunay::triangulate(pts, K{}, options);
         if (!r.ok()) {
@@ -302,6 +309,7 @@ void cgal_bench(benchmark::State& state, const std::string& name, const std::str
                          static_cast<double>(count);
         return r;
     });
+    malloc_trim(0);
     for (auto _ : state) {
         CgalDelaunay dt;
         dt.insert(in.cgal.begin(), in.cgal.end());

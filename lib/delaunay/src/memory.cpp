@@ -11,8 +11,9 @@ namespace exidel::delaunay::detail {
 
 void advise_huge_pages([[maybe_unused]] void* p, [[maybe_unused]] std::size_t bytes) noexcept {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-    // Below 4 MiB at most one aligned 2 MiB extent fits: not worth a system call.
-    constexpr std::size_t min_bytes = std::size_t{4} << 20, page = 4096;
+    // Below 2 MiB no aligned huge page fits (from 2 to 4 MiB, one at most: the 4 MB
+    // arrays of 10^6 indices get one or two).
+    constexpr std::size_t min_bytes = std::size_t{2} << 20, page = 4096;
     if (p == nullptr || bytes < min_bytes) return;
     const auto begin = reinterpret_cast<std::uintptr_t>(p);
     const std::uintptr_t lo = (begin + page - 1) & ~(page - 1);

@@ -68,7 +68,7 @@ public:
     DivideAndConquerBuilder(const K& kernel, std::vector<Point2>& points,
                             std::vector<std::uint32_t>& input_of, Mesh& mesh)
         : k_(kernel), pts_(points), input_of_(input_of), mesh_(mesh),
-          gone_(6 * points.size(), 0), merger_(kernel, points, mesh, gone_) {}
+          merger_(kernel, points, mesh) {}
 
     std::optional<Failure> run(Counters& counters) {
         const std::size_t n = pts_.size();
@@ -199,7 +199,6 @@ private:
     std::vector<Point2>& pts_;
     std::vector<std::uint32_t>& input_of_;
     Mesh& mesh_;
-    std::vector<std::uint8_t> gone_;
     Merger<K, I> merger_;
     Counters leaf_counters_{};
     std::vector<std::uint8_t> cuts_;                               // the plan, pre-order

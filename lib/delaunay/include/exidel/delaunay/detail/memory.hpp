@@ -12,16 +12,14 @@
 #pragma once
 
 #include <cstddef>
-#include <cstdlib>
 #include <memory>
-#include <new>
 #include <type_traits>
 #include <vector>
 
 namespace exidel::delaunay::detail {
 
 /// Advises the kernel to back the whole 4 KiB pages inside [p, p + bytes) with huge pages.
-/// Ranges below a few huge pages are left alone. Never fails: it is only advice.
+/// Ranges below one huge page (2 MiB) are left alone. Never fails: it is only advice.
 void advise_huge_pages(void* p, std::size_t bytes) noexcept;
 
 /// Makes room for n elements in v. When v must grow, it is reallocated to exactly n and
@@ -58,22 +56,6 @@ std::unique_ptr<T[]> allocate_fresh(std::size_t n) {
     std::unique_ptr<T[]> p(new T[n]);  // default-initialised: no fill
     advise_huge_pages(p.get(), n * sizeof(T));
     return p;
-}
-
-struct FreeDeleter {
-    void operator()(void* p) const noexcept { std::free(p); }
-};
-
-/// n zero elements of a trivial type from calloc, which hands out large blocks as fresh
-/// mappings (already zero, untouched) instead of filling them: the pages are faulted in
-/// only where they are used. Throws std::bad_alloc like new.
-template <class T>
-std::unique_ptr<T[], FreeDeleter> allocate_zeroed(std::size_t n) {
-    static_assert(std::is_trivial_v<T>);
-    void* p = std::calloc(n == 0 ? 1 : n, sizeof(T));
-    if (p == nullptr) throw std::bad_alloc();
-    advise_huge_pages(p, n * sizeof(T));
-    return std::unique_ptr<T[], FreeDeleter>(static_cast<T*>(p));
 }
 
 }  // namespace exidel::delaunay::detail

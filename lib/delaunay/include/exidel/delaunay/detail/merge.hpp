@@ -24,7 +24,7 @@
 //      base make a new triangle, and the base rises to the edge from the winner;
 //   3. with no valid candidate the base is the upper common tangent.
 //
-// On the arrays: a deleted edge is marked in `gone`, and a triangle with a deleted edge is
+// On the arrays: a deleted edge is kept in a set of half-edges, and a triangle with a deleted edge is
 // destroyed after the zipper (its final faces are the new triangles). The zipper only
 // reads the arrays, so it walks the fans of L and R as they were, skipping marked edges;
 // that is exactly Guibas and Stolfi's structure, where the deleted edges are gone and the
@@ -51,6 +51,51 @@
 
 namespace exidel::delaunay::detail {
 
+/// The half-edges deleted by the merge in progress: an open-addressing hash set. A merge
+/// deletes edges along its seam only, a few per seam vertex, so the set stays small and
+/// in cache (a byte per half-edge of the whole mesh, as before issue 17, cost 6 bytes per
+/// point of fresh memory and a cache miss per test). Its common question, with nothing
+/// deleted yet, is one comparison.
+class HalfEdgeSet {
+public:
+    bool contains(std::uint32_t e) const noexcept {
+        if (size_ == 0) return false;
+        for (std::size_t i = slot(e);; i = (i + 1) & (table_.size() - 1)) {
+            if (table_[i] == e) return true;
+            if (table_[i] == empty) return false;
+        }
+    }
+    void insert(std::uint32_t e) {
+        if (2 * (size_ + 1) > table_.size()) grow();
+        std::size_t i = slot(e);
+        for (; table_[i] != empty; i = (i + 1) & (table_.size() - 1)) {
+            if (table_[i] == e) return;
+        }
+        table_[i] = e;
+        ++size_;
+    }
+    void clear() {
+        if (size_ > 0) std::fill(table_.begin(), table_.end(), empty);
+        size_ = 0;
+    }
+
+private:
+    static constexpr std::uint32_t empty = 0xffffffffu;  // never a half-edge (< 2^31)
+    std::size_t slot(std::uint32_t e) const noexcept {
+        return static_cast<std::size_t>((e * 0x9e3779b97f4a7c15ull) >> 32) & (table_.size() - 1);
+    }
+    void grow() {
+        std::vector<std::uint32_t> old(std::max<std::size_t>(64, 2 * table_.size()), empty);
+        old.swap(table_);
+        size_ = 0;
+        for (const std::uint32_t e : old) {
+            if (e != empty) insert(e);
+        }
+    }
+    std::vector<std::uint32_t> table_;
+    std::size_t size_ = 0;
+};
+
 /// A triangulated piece of the sorted points: positions [first, end), triangle slots
 /// [2 first, 2 end) of the shared Mesh, `free` the slots of that range not in use.
 struct Piece {
@@ -61,13 +106,11 @@ struct Piece {
 template <PredicateKernel K, Instrumentation I>
 class Merger : Counting<I> {
 public:
-    /// `points`: all sorted points; `mesh`: the shared arrays, over sorted positions;
-    /// `gone`: one byte per half-edge slot, all zero between merges (each merge clears
-    /// what it marks). Merges of disjoint pieces touch disjoint parts of all three, so
-    /// they may run in parallel.
-    Merger(const K& kernel, std::span<const Point2> points, Mesh& mesh,
-           std::span<std::uint8_t> gone)
-        : k_(kernel), pts_(points), m_(mesh), gone_(gone) {}
+    /// `points`: all sorted points; `mesh`: the shared arrays, over sorted positions.
+    /// Merges of disjoint pieces touch disjoint parts of the arrays, so mergers of their
+    /// own may run them in parallel.
+    Merger(const K& kernel, std::span<const Point2> points, Mesh& mesh)
+        : k_(kernel), pts_(points), m_(mesh) {}
 
     /// Merges R into L (L.end == R.first). `l0` and `r0`: L's largest and R's smallest
     /// point in the order that separates them (above). On failure the two pieces are
@@ -80,6 +123,7 @@ public:
         start_r_ = r0;
         steps_.clear();
         deleted_.clear();
+        gone_.clear();
         // A guard against an inexact kernel sending the walks round in circles, not a
         // cost model: every step of the walks spends one unit. Exact runs on the test
         // families spent at most about 9 units per point of the two pieces (the fans are
@@ -90,7 +134,6 @@ public:
         R.free.clear();
         auto failure = zip();
         if (!failure) failure = rebuild();
-        for (const std::uint32_t e : deleted_) gone_[e] = 0;
         L.end = R.end;
         return failure;
     }
@@ -138,14 +181,14 @@ private:
     }
 
     bool is_gone(const Fan& f) const {
-        return (f.out >= 0 && gone_[static_cast<std::size_t>(f.out)]) ||
-               (f.in >= 0 && gone_[static_cast<std::size_t>(f.in)]);
+        return (f.out >= 0 && gone_.contains(static_cast<std::uint32_t>(f.out))) ||
+               (f.in >= 0 && gone_.contains(static_cast<std::uint32_t>(f.in)));
     }
     void remove(const Fan& f) {
         this->count(&Counters::merge_deleted_edges);
         for (const std::int32_t e : {f.in, f.out}) {
             if (e >= 0) {
-                gone_[static_cast<std::size_t>(e)] = 1;
+                gone_.insert(static_cast<std::uint32_t>(e));
                 deleted_.push_back(static_cast<std::uint32_t>(e));
             }
         }
@@ -360,7 +403,7 @@ private:
     const K& k_;
     std::span<const Point2> pts_;
     Mesh& m_;
-    std::span<std::uint8_t> gone_;
+    HalfEdgeSet gone_;                    // the deleted edges' half-edges
     Piece* L_ = nullptr;
     Piece* R_ = nullptr;
     std::vector<Step> steps_;

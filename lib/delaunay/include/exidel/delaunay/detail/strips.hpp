@@ -145,11 +145,8 @@ std::optional<Failure> build_strips(const K& kernel, std::span<const Point2> pts
                                     into);
     };
 
-    // Zero pages from calloc: a merge reads and marks only the few slots along its seam.
-    const auto gone_bytes = allocate_zeroed<std::uint8_t>(6 * n);
-    const std::span<std::uint8_t> gone(gone_bytes.get(), 6 * n);
     auto merge = [&](std::size_t left, std::size_t right, Counters& into) {
-        Merger<K, I> merger(kernel, pts, mesh, gone);
+        Merger<K, I> merger(kernel, pts, mesh);
         auto failure = merger.merge(pieces[left], pieces[right]);
         into += merger.counters();
         return failure;
