@@ -66,6 +66,8 @@
 //   the points' own angular range and the walk goes both ways: 1.7 per point.)
 // The kernel comparison (double, exact) runs on uniform only, exact at 10^4 only.
 // --exidel_huge adds 10^7 uniform (every strategy; several GB of memory).
+// --exidel_giant adds 10^8 uniform, the default (t1, t2) and CGAL only: about 9 GB for
+// exidel, 15 GB for CGAL, 3.2 GB for the input in both forms (issue 17's scale check).
 // Measured on the 2-core development machine under a load of 3-4 (another build
 // running): 16 minutes with --benchmark_repetitions=3, so well under 15 with the default
 // single repetition (the untimed runs and input generation are not repeated).
@@ -373,16 +375,18 @@ void add(const std::string& in_name, std::size_t n, bool lexicographic, bool rad
 
 int main(int argc, char** argv) {
     benchmark::Initialize(&argc, argv);
-    bool slow = false, huge = false;
+    bool slow = false, huge = false, giant = false;
     for (int i = 1; i < argc; ++i) {
         const std::string_view a = argv[i];
         if (a == "--exidel_slow") {
             slow = true;
         } else if (a == "--exidel_huge") {
             huge = true;
+        } else if (a == "--exidel_giant") {
+            giant = true;
         } else {
             std::fprintf(stderr, "unknown option %s (besides Google Benchmark's: "
-                                 "--exidel_slow, --exidel_huge)\n", argv[i]);
+                                 "--exidel_slow, --exidel_huge, --exidel_giant)\n", argv[i]);
             return 2;
         }
     }
@@ -409,6 +413,15 @@ int main(int argc, char** argv) {
     // The lexicographic order's worst case, small enough to run (n^2/8 flips).
     add("parabola-asc", 8192, true, true);
     if (huge) add("uniform", 10'000'000, true, true);
+    if (giant) {
+        const std::size_t n = 100'000'000;
+        const std::string prefix = "tri/uniform/" + std::to_string(n) + "/";
+        add_exidel<AdaptiveKernel>(prefix, "adaptive", "uniform", n, Strategy::automatic, 1);
+        add_exidel<AdaptiveKernel>(prefix, "adaptive", "uniform", n, Strategy::automatic, 2);
+        reg(prefix + "cgal-epick", n, [=](benchmark::State& s) {
+            cgal_bench(s, prefix + "cgal-epick", "uniform", n);
+        });
+    }
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
     return 0;
