@@ -12,6 +12,7 @@
 
 #include "exidel/predicates/constants.hpp"
 #include "exidel/predicates/exact.hpp"
+#include "adaptive_filter.hpp"
 #include "adaptive_unchecked.hpp"
 #include "double_word.hpp"
 #include "expansion.hpp"
@@ -25,17 +26,9 @@ namespace exidel {
 namespace {
 
 using detail::Expansion;
+using detail::filter_decides;
+using detail::IncircleDifferences;
 namespace eb = bounds;
-
-// ---- Deciding a filter ------------------------------------------------------------------
-// One predictable branch ("decided?") instead of one per sign: on random input the sign is
-// a coin flip, and a branch on it mispredicts half the time. Strict comparisons: when an
-// overflow makes the value and the bound infinite or NaN, neither test passes.
-inline bool filter_decides(double value, double errbound, Sign& sign) {
-    const bool positive = value > errbound, negative = -value > errbound;
-    sign = static_cast<Sign>(static_cast<int>(positive) - static_cast<int>(negative));
-    return positive | negative;
-}
 
 // ---- When is expansion arithmetic error-free? -------------------------------------------
 // Every nonzero double v is a multiple of 2^g(v), g(v) = max(ilogb(v) - 52, -1074). A
@@ -171,26 +164,15 @@ Sign product_pair_adapt(const ProductPair& t, double sum_abs, AdaptiveStage& sta
     return product_pair_adapt<false>({a.x, c.x, b.y, c.y, a.y, c.y, b.x, c.x}, detsum, stage);
 }
 
-// (a - c) x (b - c), which equals (b - a) x (c - a).
 inline Sign orient2d_impl(Point2 a, Point2 b, Point2 c, AdaptiveStage* stage) {
-    const double detleft = (a.x - c.x) * (b.y - c.y);
-    const double detright = (a.y - c.y) * (b.x - c.x);
-    const double det = detleft - detright;
-    const double detsum = std::fabs(detleft) + std::fabs(detright);
-    const double errbound = eb::ccw_a * detsum + eb::underflow_orient;
     *stage = AdaptiveStage::filter;
-    if (Sign s; filter_decides(det, errbound, s)) [[likely]]
+    double detsum;
+    if (Sign s; detail::orient2d_filter(a, b, c, s, detsum)) [[likely]]
         return s;
     return orient2d_adapt(a, b, c, detsum, *stage);
 }
 
 // ---- incircle ---------------------------------------------------------------------------
-
-/// The rounded differences a - d, b - d, c - d every stage of incircle starts from:
-/// computed once by the filter and handed down to the slower stages.
-struct IncircleDifferences {
-    double adx, ady, bdx, bdy, cdx, cdy;
-};
 
 /// lift * (p - q) for one row of the incircle determinant: (x^2 + y^2) times the
 /// two-product difference p1 q1 - p2 q2, as an expansion of at most 32 components.
@@ -417,21 +399,10 @@ template <bool Fma>
 }
 
 inline Sign incircle_impl(Point2 a, Point2 b, Point2 c, Point2 d, AdaptiveStage* stage) {
-    const IncircleDifferences v{a.x - d.x, a.y - d.y, b.x - d.x, b.y - d.y, c.x - d.x, c.y - d.y};
-    const auto [adx, ady, bdx, bdy, cdx, cdy] = v;
-    // Semi-static filter: one bound from the largest difference (constants.hpp). The
-    // expression is stage A's, operation for operation.
-    const double m = std::max({std::fabs(adx), std::fabs(ady), std::fabs(bdx), std::fabs(bdy),
-                               std::fabs(cdx), std::fabs(cdy)});
-    const double det = (adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) +
-                       (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
-                       (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
     *stage = AdaptiveStage::filter;
-    if (m >= eb::icc_static_min && m <= eb::icc_static_max) [[likely]] {
-        const double m2 = m * m;
-        if (Sign s; filter_decides(det, eb::icc_static * (m2 * m2), s)) [[likely]]
-            return s;
-    }
+    IncircleDifferences v;
+    if (Sign s; detail::incircle_filter(a, b, c, d, v, s)) [[likely]]
+        return s;
     return incircle_stage_a(a, b, c, d, v, *stage);
 }
 

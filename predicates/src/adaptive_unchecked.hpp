@@ -1,6 +1,7 @@
 // exidel (private): the adaptive kernel's predicates without the floating-point
 // environment check, for callers that have made the environment standard themselves
-// (batch.cpp checks it once per array). Defined in adaptive.cpp.
+// (batch.cpp checks it once per array; the library's triangulation with the adaptive
+// kernel once per run, lib/delaunay/src/inline_adaptive.hpp). Defined in adaptive.cpp.
 #pragma once
 
 #include "exidel/predicates/types.hpp"

@@ -3,6 +3,8 @@
 // (compiled with -ffp-contract=off), uninstrumented and with counters.
 #include "exidel/delaunay/hull.hpp"
 #include "exidel/delaunay/triangulate.hpp"
+#include "fp_environment.hpp"
+#include "inline_adaptive.hpp"
 
 namespace exidel::delaunay {
 
@@ -14,5 +16,42 @@ namespace exidel::delaunay {
     template SortedHull sorted_convex_hull<K>(std::span<const Point2>, const K&);
 EXIDEL_KERNELS(EXIDEL_DELAUNAY_INSTANTIATE)
 #undef EXIDEL_DELAUNAY_INSTANTIATE
+
+// The adaptive kernel's triangulation runs InlineAdaptiveKernel: the same exact answers,
+// the filters inline and the floating-point environment made standard once for the whole
+// run (inline_adaptive.hpp).
+namespace {
+
+// Never inlined, so that the compiler cannot move the run's floating-point work across
+// the MXCSR writes of the guard below.
+template <Instrumentation I>
+[[gnu::noinline]] Result triangulate_inline_adaptive(std::span<const Point2> points,
+                                                     const Options& options) {
+    return detail::triangulate_with<I>(points, detail::InlineAdaptiveKernel{}, options);
+}
+
+template <Instrumentation I>
+Result triangulate_in_standard_environment(std::span<const Point2> points,
+                                           const Options& options) {
+    if (exidel::detail::environment_is_standard()) [[likely]]
+        return triangulate_inline_adaptive<I>(points, options);
+    const exidel::detail::StandardEnvironment guard;  // restores the caller's at the end
+    return triangulate_inline_adaptive<I>(points, options);
+}
+
+}  // namespace
+
+template <>
+Result triangulate<Instrumentation::off, AdaptiveKernel>(std::span<const Point2> points,
+                                                         const AdaptiveKernel&,
+                                                         const Options& options) {
+    return triangulate_in_standard_environment<Instrumentation::off>(points, options);
+}
+template <>
+Result triangulate<Instrumentation::counters, AdaptiveKernel>(std::span<const Point2> points,
+                                                              const AdaptiveKernel&,
+                                                              const Options& options) {
+    return triangulate_in_standard_environment<Instrumentation::counters>(points, options);
+}
 
 }  // namespace exidel::delaunay

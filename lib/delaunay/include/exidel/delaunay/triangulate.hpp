@@ -80,7 +80,13 @@ Result run_algorithm(const K& kernel, SortedInput& in, const Options& options) {
 /// the run may stop with a Failure saying where the kernel contradicted itself; it never
 /// loops or reads out of bounds.
 template <Instrumentation I = Instrumentation::off, PredicateKernel K>
-Result triangulate(std::span<const Point2> points, const K& kernel, const Options& options = {}) {
+Result triangulate(std::span<const Point2> points, const K& kernel, const Options& options = {});
+
+namespace detail {
+
+/// triangulate's body, for every kernel.
+template <Instrumentation I, PredicateKernel K>
+Result triangulate_with(std::span<const Point2> points, const K& kernel, const Options& options) {
     detail::SortedInput input;
     if (auto failure = detail::sort_and_dedupe(points, input, options.threads)) {
         Result r;
@@ -94,9 +100,28 @@ Result triangulate(std::span<const Point2> points, const K& kernel, const Option
     return detail::run_algorithm<K, I, InCirclePolicy::determinant>(kernel, input, options);
 }
 
+}  // namespace detail
+
+template <Instrumentation I, PredicateKernel K>
+Result triangulate(std::span<const Point2> points, const K& kernel, const Options& options) {
+    return detail::triangulate_with<I>(points, kernel, options);
+}
+
+// The adaptive kernel's triangulation is the library's own code, specialized
+// (src/instantiate.cpp): the same predicates, with the filters of orient2d and incircle
+// inline in the algorithms' loops instead of behind a call each.
+template <>
+Result triangulate<Instrumentation::off, AdaptiveKernel>(std::span<const Point2>,
+                                                         const AdaptiveKernel&, const Options&);
+template <>
+Result triangulate<Instrumentation::counters, AdaptiveKernel>(std::span<const Point2>,
+                                                              const AdaptiveKernel&,
+                                                              const Options&);
+
 // Compiled once in the library for every kernel of the registry
-// (exidel/predicates/registry.hpp), uninstrumented and with counters. Instrumentation::
-// theorem1 is not: the tests that use it instantiate it.
+// (exidel/predicates/registry.hpp), uninstrumented and with counters (for AdaptiveKernel
+// the declarations below have no effect: its specializations above are the library's).
+// Instrumentation::theorem1 is not: the tests that use it instantiate it.
 #define EXIDEL_DELAUNAY_EXTERN(K, spelling, summary)                                      \
     extern template Result triangulate<Instrumentation::off, K>(std::span<const Point2>,  \
                                                                  const K&, const Options&); \
