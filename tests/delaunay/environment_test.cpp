@@ -2,11 +2,11 @@
 // environment once per run, not once per predicate (lib/delaunay/src/inline_adaptive.hpp):
 // a caller's directed rounding or flush-to-zero / denormals-are-zero is replaced by the
 // standard environment for the whole run, the strips' worker threads included, and
-// restored afterwards. Here every environment the hygiene tests use must give the arrays
-// of the default environment, on inputs where it matters: a grid of subnormal points
-// (denormals-are-zero would read every coordinate as zero) and a near-cocircular set
-// decided by the later stages (directed rounding would move the filter's value past its
-// bound).
+// restored afterwards. Here every environment the hygiene tests try
+// (tests/hygiene/fp_environment.hpp) must give the arrays of the default environment, on
+// inputs where it matters: a grid of subnormal points (denormals-are-zero would read every
+// coordinate as zero) and a near-cocircular set decided by the later stages (directed
+// rounding would move the filter's value past its bound).
 #include <gtest/gtest.h>
 
 #include <cfenv>
@@ -23,22 +23,6 @@ namespace {
 using namespace exidel;
 using namespace exidel::delaunay;
 using namespace exidel::hygiene;
-
-struct Environment {
-    const char* name;
-    int rounding;
-    unsigned ftz_daz;
-};
-
-constexpr Environment environments[] = {
-    {"upward", FE_UPWARD, 0},
-    {"downward", FE_DOWNWARD, 0},
-    {"toward-zero", FE_TOWARDZERO, 0},
-#if EXIDEL_HYGIENE_HAVE_MXCSR
-    {"ftz+daz", FE_TONEAREST, mxcsr_ftz | mxcsr_daz},
-    {"ftz+daz+upward", FE_UPWARD, mxcsr_ftz | mxcsr_daz},
-#endif
-};
 
 /// A 70 x 70 integer grid times 2^-1070: every coordinate subnormal (or zero), every
 /// difference exact, cocircular quadruples everywhere.

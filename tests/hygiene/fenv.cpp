@@ -18,25 +18,6 @@ using namespace exidel::hygiene;
 
 namespace {
 
-struct Environment {
-    const char* name;
-    int rounding;
-    unsigned ftz_daz;
-};
-
-constexpr Environment environments[] = {
-    {"upward", FE_UPWARD, 0},
-    {"downward", FE_DOWNWARD, 0},
-    {"toward-zero", FE_TOWARDZERO, 0},
-#if EXIDEL_HYGIENE_HAVE_MXCSR
-    {"ftz+daz", FE_TONEAREST, mxcsr_ftz | mxcsr_daz},
-    {"ftz", FE_TONEAREST, mxcsr_ftz},
-    {"daz", FE_TONEAREST, mxcsr_daz},
-    {"ftz+daz+upward", FE_UPWARD, mxcsr_ftz | mxcsr_daz},
-    {"ftz+daz+toward-zero", FE_TOWARDZERO, mxcsr_ftz | mxcsr_daz},
-#endif
-};
-
 // Evaluates `kernel` over `family` in `env`; counts wrong signs and environment changes.
 template <class Kernel>
 std::size_t check(const Kernel& kernel, const Environment& env, const QueryFamily& family,

@@ -56,6 +56,28 @@ inline void set_controls(int rounding, unsigned ftz_daz) {
     write_mxcsr((read_mxcsr() & ~(mxcsr_ftz | mxcsr_daz)) | ftz_daz);
 }
 
+/// A non-default environment a caller can leave behind: a rounding mode and, on x86, the
+/// FTZ/DAZ bits (for set_controls).
+struct Environment {
+    const char* name;
+    int rounding;
+    unsigned ftz_daz;
+};
+
+/// Every one the hygiene tests try.
+inline constexpr Environment environments[] = {
+    {"upward", FE_UPWARD, 0},
+    {"downward", FE_DOWNWARD, 0},
+    {"toward-zero", FE_TOWARDZERO, 0},
+#if EXIDEL_HYGIENE_HAVE_MXCSR
+    {"ftz+daz", FE_TONEAREST, mxcsr_ftz | mxcsr_daz},
+    {"ftz", FE_TONEAREST, mxcsr_ftz},
+    {"daz", FE_TONEAREST, mxcsr_daz},
+    {"ftz+daz+upward", FE_UPWARD, mxcsr_ftz | mxcsr_daz},
+    {"ftz+daz+toward-zero", FE_TOWARDZERO, mxcsr_ftz | mxcsr_daz},
+#endif
+};
+
 /// Runs f() in the IEEE default environment (round to nearest, no FTZ/DAZ) and restores
 /// whatever was set before: the reference answers are computed here.
 template <class F>

@@ -54,7 +54,8 @@ struct Mesh {
 
     /// A new triangle (a, b, c), counter-clockwise, in the most recently freed slot or a
     /// new one. Its half-edges' twins are left to the caller (new slots start at -1).
-    std::uint32_t add_triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    [[gnu::always_inline]] std::uint32_t add_triangle(std::uint32_t a, std::uint32_t b,
+                                                      std::uint32_t c) {
         std::uint32_t t;
         if (!free.empty()) {
             t = free.back();
