@@ -10,7 +10,7 @@
 // instead of once per call (reading MXCSR was half of every in-circle test's time).
 //
 // Precondition: the run is in the standard floating-point environment (round to nearest,
-// no flush-to-zero or denormals-are-zero). triangulate_in_standard_environment
+// no flush-to-zero or denormals-are-zero). detail::triangulate_adaptive
 // (instantiate.cpp) establishes it for the whole run; the threads a run starts inherit it
 // (POSIX: a new thread starts with the floating-point environment of the thread that
 // created it, and parallel_for starts its threads inside the run).

@@ -23,35 +23,26 @@ EXIDEL_KERNELS(EXIDEL_DELAUNAY_INSTANTIATE)
 namespace {
 
 // Never inlined, so that the compiler cannot move the run's floating-point work across
-// the MXCSR writes of the guard below.
+// the MXCSR writes of the guard in triangulate_adaptive.
 template <Instrumentation I>
 [[gnu::noinline]] Result triangulate_inline_adaptive(std::span<const Point2> points,
                                                      const Options& options) {
     return detail::triangulate_with<I>(points, detail::InlineAdaptiveKernel{}, options);
 }
 
+}  // namespace
+
 template <Instrumentation I>
-Result triangulate_in_standard_environment(std::span<const Point2> points,
-                                           const Options& options) {
+Result detail::triangulate_adaptive(std::span<const Point2> points, const Options& options) {
     if (exidel::detail::environment_is_standard()) [[likely]]
         return triangulate_inline_adaptive<I>(points, options);
     const exidel::detail::StandardEnvironment guard;  // restores the caller's at the end
     return triangulate_inline_adaptive<I>(points, options);
 }
 
-}  // namespace
-
-template <>
-Result triangulate<Instrumentation::off, AdaptiveKernel>(std::span<const Point2> points,
-                                                         const AdaptiveKernel&,
-                                                         const Options& options) {
-    return triangulate_in_standard_environment<Instrumentation::off>(points, options);
-}
-template <>
-Result triangulate<Instrumentation::counters, AdaptiveKernel>(std::span<const Point2> points,
-                                                              const AdaptiveKernel&,
-                                                              const Options& options) {
-    return triangulate_in_standard_environment<Instrumentation::counters>(points, options);
-}
+template Result detail::triangulate_adaptive<Instrumentation::off>(std::span<const Point2>,
+                                                                   const Options&);
+template Result detail::triangulate_adaptive<Instrumentation::counters>(
+    std::span<const Point2>, const Options&);
 
 }  // namespace exidel::delaunay

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <span>
+#include <type_traits>
 #include <utility>
 
 #include "exidel/delaunay/algorithms.hpp"
@@ -100,28 +101,27 @@ Result triangulate_with(std::span<const Point2> points, const K& kernel, const O
     return detail::run_algorithm<K, I, InCirclePolicy::determinant>(kernel, input, options);
 }
 
+/// The adaptive kernel's run as the library compiles it (src/instantiate.cpp, for `off`
+/// and `counters`): the same predicates, with the filters of orient2d and incircle inline
+/// in the algorithms' loops instead of behind a call each, and the floating-point
+/// environment checked once per run instead of once per call.
+template <Instrumentation I>
+Result triangulate_adaptive(std::span<const Point2> points, const Options& options);
+
 }  // namespace detail
 
 template <Instrumentation I, PredicateKernel K>
 Result triangulate(std::span<const Point2> points, const K& kernel, const Options& options) {
-    return detail::triangulate_with<I>(points, kernel, options);
+    if constexpr (std::is_same_v<K, AdaptiveKernel> && I != Instrumentation::theorem1) {
+        return detail::triangulate_adaptive<I>(points, options);
+    } else {
+        return detail::triangulate_with<I>(points, kernel, options);
+    }
 }
 
-// The adaptive kernel's triangulation is the library's own code, specialized
-// (src/instantiate.cpp): the same predicates, with the filters of orient2d and incircle
-// inline in the algorithms' loops instead of behind a call each.
-template <>
-Result triangulate<Instrumentation::off, AdaptiveKernel>(std::span<const Point2>,
-                                                         const AdaptiveKernel&, const Options&);
-template <>
-Result triangulate<Instrumentation::counters, AdaptiveKernel>(std::span<const Point2>,
-                                                              const AdaptiveKernel&,
-                                                              const Options&);
-
 // Compiled once in the library for every kernel of the registry
-// (exidel/predicates/registry.hpp), uninstrumented and with counters (for AdaptiveKernel
-// the declarations below have no effect: its specializations above are the library's).
-// Instrumentation::theorem1 is not: the tests that use it instantiate it.
+// (exidel/predicates/registry.hpp), uninstrumented and with counters. Instrumentation::
+// theorem1 is not: the tests that use it instantiate it.
 #define EXIDEL_DELAUNAY_EXTERN(K, spelling, summary)                                      \
     extern template Result triangulate<Instrumentation::off, K>(std::span<const Point2>,  \
                                                                  const K&, const Options&); \
