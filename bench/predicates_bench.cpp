@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "exidel/predicates/all.hpp"
+#include "cycle.hpp"
 #include "generators.hpp"
 
 namespace {
@@ -67,19 +68,6 @@ const std::vector<Input>& inputs() {
     return all;
 }
 
-// One call per iteration, cycling through the array.
-template <class Call>
-void run(benchmark::State& state, const std::vector<Quad>& queries, Call call) {
-    const std::size_t mask = queries.size() - 1;  // size is a power of two
-    std::size_t i = 0;
-    int sum = 0;
-    for (auto _ : state) {
-        sum += call(queries[i]);
-        i = (i + 1) & mask;
-    }
-    benchmark::DoNotOptimize(sum);
-    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
-}
 
 template <PredicateKernel K>
 void register_kernel(const K& k, bool every_family) {
@@ -87,21 +75,22 @@ void register_kernel(const K& k, bool every_family) {
         if (!in.every_kernel && !every_family) continue;
         const std::string suffix = "/" + in.name + "/" + std::string(k.name());
         benchmark::RegisterBenchmark(("orient2d" + suffix).c_str(), [k, &in](benchmark::State& s) {
-            run(s, in.orient, [&k](const Quad& q) { return to_int(k.orient2d(q.a, q.b, q.c)); });
+            exidel::bench::cycle(s, in.orient,
+                                 [&k](const Quad& q) { return to_int(k.orient2d(q.a, q.b, q.c)); });
         });
         benchmark::RegisterBenchmark(("incircle" + suffix).c_str(), [k, &in](benchmark::State& s) {
-            run(s, in.incircle,
+            exidel::bench::cycle(s, in.incircle,
                 [&k](const Quad& q) { return to_int(k.incircle(q.a, q.b, q.c, q.d)); });
         });
         benchmark::RegisterBenchmark(
             ("incircle_cosine" + suffix).c_str(), [k, &in](benchmark::State& s) {
-                run(s, in.incircle,
+                exidel::bench::cycle(s, in.incircle,
                     [&k](const Quad& q) { return to_int(k.incircle_cosine(q.a, q.b, q.c, q.d)); });
             });
         if (in.distance.empty()) continue;
         benchmark::RegisterBenchmark(
             ("compare_distance" + suffix).c_str(), [k, &in](benchmark::State& s) {
-                run(s, in.distance,
+                exidel::bench::cycle(s, in.distance,
                     [&k](const Quad& q) { return to_int(k.compare_distance(q.a, q.b, q.c)); });
             });
     }
@@ -187,7 +176,7 @@ void register_cgal() {
     for (const Input& in : inputs()) {
         benchmark::RegisterBenchmark(("orient2d/" + in.name + "/cgal-epick").c_str(),
                                      [&in](benchmark::State& s) {
-            run(s, in.orient, [](const Quad& q) {
+            exidel::bench::cycle(s, in.orient, [](const Quad& q) {
                 return static_cast<int>(CGAL::orientation(Epick::Point_2(q.a.x, q.a.y),
                                                           Epick::Point_2(q.b.x, q.b.y),
                                                           Epick::Point_2(q.c.x, q.c.y)));
@@ -195,7 +184,7 @@ void register_cgal() {
         });
         benchmark::RegisterBenchmark(("incircle/" + in.name + "/cgal-epick").c_str(),
                                      [&in](benchmark::State& s) {
-            run(s, in.incircle, [](const Quad& q) {
+            exidel::bench::cycle(s, in.incircle, [](const Quad& q) {
                 return static_cast<int>(CGAL::side_of_oriented_circle(
                     Epick::Point_2(q.a.x, q.a.y), Epick::Point_2(q.b.x, q.b.y),
                     Epick::Point_2(q.c.x, q.c.y), Epick::Point_2(q.d.x, q.d.y)));
@@ -205,7 +194,7 @@ void register_cgal() {
         // compare_distance_to_point(c, p, q) is LARGER when p is farther from c: our sign.
         benchmark::RegisterBenchmark(("compare_distance/" + in.name + "/cgal-epick").c_str(),
                                      [&in](benchmark::State& s) {
-            run(s, in.distance, [](const Quad& q) {
+            exidel::bench::cycle(s, in.distance, [](const Quad& q) {
                 return static_cast<int>(CGAL::compare_distance_to_point(
                     Epick::Point_2(q.a.x, q.a.y), Epick::Point_2(q.b.x, q.b.y),
                     Epick::Point_2(q.c.x, q.c.y)));

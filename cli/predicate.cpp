@@ -36,6 +36,13 @@ Input (FILE, or standard input when no file or '-' is given), one query per line
   compare_distance cx cy px py qx qy
       sign of |p - c|^2 - |q - c|^2: 1 iff p is strictly farther from c than q
       (the radial insertion order's comparison).
+  orient3d        ax ay az bx by bz cx cy cz dx dy dz
+      sign of det(a - d, b - d, c - d) (Shewchuk's convention): 1 iff d lies below
+      the plane through a, b, c, "below" being the side from which a, b, c appear
+      clockwise. The opposite of CGAL's orientation(a, b, c, d).
+  insphere        ax ay az bx by bz cx cy cz dx dy dz ex ey ez
+      1 iff e is strictly inside the sphere through a, b, c, d when orient3d(a, b, c, d)
+      is 1; the sign flips with orient3d(a, b, c, d).
 Coordinates: decimal (0.1, -2.5e-300) or C99 hexadecimal floats (0x1.8p-3,
 -0X1P+4), each rounded to the nearest double (a value below the smallest subnormal
 rounds to zero). Tokens are separated by spaces or tabs. Everything from a '#' to the

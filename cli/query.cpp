@@ -36,10 +36,28 @@ ParsedLine parse_query_line(std::string_view line) {
         out.error = std::move(message);
         return out;
     };
+    if (tokens[0] == "orient3d" || tokens[0] == "insphere") {
+        const bool orient = tokens[0] == "orient3d";
+        const std::size_t expected = orient ? 12 : 15;
+        if (tokens.size() - 1 != expected) {
+            return fail(std::string(tokens[0]) + " takes " + std::to_string(expected) +
+                        " coordinates, got " + std::to_string(tokens.size() - 1));
+        }
+        out.query.space = orient ? SpacePredicate::orient3d : SpacePredicate::insphere;
+        for (std::size_t i = 0; i < expected; ++i) {
+            ParsedNumber n = parse_double(tokens[i + 1]);
+            if (!n.value) return fail("coordinate " + std::to_string(i + 1) + ": " + n.error);
+            Point3& p = out.query.points3[i / 3];
+            (i % 3 == 0 ? p.x : i % 3 == 1 ? p.y : p.z) = *n.value;
+        }
+        out.kind = ParsedLine::Kind::query;
+        return out;
+    }
     const std::optional<Predicate> predicate = predicate_from_name(tokens[0]);
     if (!predicate) {
         return fail("unknown predicate " + quoted(tokens[0]) +
-                    " (expected orient2d, incircle, incircle_cosine or compare_distance)");
+                    " (expected orient2d, incircle, incircle_cosine, compare_distance, "
+                    "orient3d or insphere)");
     }
     const std::size_t expected = 2 * point_count(*predicate);
     if (tokens.size() - 1 != expected) {

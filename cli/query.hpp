@@ -5,6 +5,8 @@
 //   incircle        ax ay bx by cx cy dx dy
 //   incircle_cosine ax ay bx by cx cy dx dy
 //   compare_distance cx cy px py qx qy     (sign of |p - c|^2 - |q - c|^2)
+//   orient3d        ax ay az bx by bz cx cy cz dx dy dz
+//   insphere        ax ay az bx by bz cx cy cz dx dy dz ex ey ez
 // Tokens are separated by blanks (space, tab, CR, VT, FF). Everything from the first '#'
 // to the end of the line is a comment; a line that is blank after removing the comment
 // holds no query. Coordinates are decimal ("0.1", "-1e-300") or C99 hexadecimal floats
@@ -23,9 +25,15 @@
 
 namespace exidel::cli {
 
+/// The predicates of space (kernel.hpp, PredicateKernel3D). They are not in
+/// EXIDEL_PREDICATES, whose entries take points of the plane.
+enum class SpacePredicate { orient3d, insphere };
+
 struct Query {
     Predicate predicate = Predicate::orient2d;
     std::array<Point2, 4> points{};  // only the first point_count(predicate) are used
+    std::optional<SpacePredicate> space;  // set for orient3d and insphere, which use:
+    std::array<Point3, 5> points3{};      // the first 4 (orient3d) or all 5 (insphere)
 };
 
 // The coordinate parser lives in lib/io (one implementation for every reader of numbers).
@@ -42,9 +50,14 @@ struct ParsedLine {
 
 ParsedLine parse_query_line(std::string_view line);
 
-/// Evaluates a parsed query with kernel `k`.
-template <PredicateKernel K>
+/// Evaluates a parsed query with kernel `k` (every shipped kernel has the 3D predicates).
+template <PredicateKernel3D K>
 Sign evaluate(const K& k, const Query& q) {
+    if (q.space) {
+        const auto& [a, b, c, d, e] = q.points3;
+        return *q.space == SpacePredicate::orient3d ? k.orient3d(a, b, c, d)
+                                                    : k.insphere(a, b, c, d, e);
+    }
     return exidel::evaluate(k, q.predicate, q.points);
 }
 

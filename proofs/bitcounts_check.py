@@ -88,31 +88,61 @@ def distance(ev, c, p, q):
     return sign(ev.sub(plen, qlen))
 
 
-BOUNDS = {  # bits, derived per intermediate in bitcounts.md
-    "orient2d": (orient, 3, lambda b: 2 * b + 3),
-    "compare_distance": (distance, 3, lambda b: 2 * b + 3),
-    "incircle": (incircle, 4, lambda b: 4 * b + 8),
-    "incircle_cosine": (cosine, 4, lambda b: 8 * b + 12),
+def orient3d(ev, a, b, c, d):  # orient3d_of_differences, d as the pivot
+    adx, ady, adz = (ev.sub(a[i], d[i]) for i in range(3))
+    bdx, bdy, bdz = (ev.sub(b[i], d[i]) for i in range(3))
+    cdx, cdy, cdz = (ev.sub(c[i], d[i]) for i in range(3))
+    t1 = ev.mul(adz, ev.sub(ev.mul(bdx, cdy), ev.mul(cdx, bdy)))
+    t2 = ev.mul(bdz, ev.sub(ev.mul(cdx, ady), ev.mul(adx, cdy)))
+    t3 = ev.mul(cdz, ev.sub(ev.mul(adx, bdy), ev.mul(bdx, ady)))
+    return sign(ev.add(ev.add(t1, t2), t3))
+
+
+def insphere(ev, a, b, c, d, e):  # insphere_of_differences, e as the pivot
+    (aex, aey, aez), (bex, bey, bez), (cex, cey, cez), (dex, dey, dez) = (
+        [ev.sub(p[i], e[i]) for i in range(3)] for p in (a, b, c, d))
+    minor = lambda p, q, r, s: ev.sub(ev.mul(p, q), ev.mul(r, s))
+    ab, bc = minor(aex, bey, bex, aey), minor(bex, cey, cex, bey)
+    cd, da = minor(cex, dey, dex, cey), minor(dex, aey, aex, dey)
+    ac, bd = minor(aex, cey, cex, aey), minor(bex, dey, dex, bey)
+    abc = ev.add(ev.sub(ev.mul(aez, bc), ev.mul(bez, ac)), ev.mul(cez, ab))
+    bcd = ev.add(ev.sub(ev.mul(bez, cd), ev.mul(cez, bd)), ev.mul(dez, bc))
+    cda = ev.add(ev.add(ev.mul(cez, da), ev.mul(dez, ac)), ev.mul(aez, cd))
+    dab = ev.add(ev.add(ev.mul(dez, ab), ev.mul(aez, bd)), ev.mul(bez, da))
+    lift = lambda x, y, z: ev.add(ev.add(ev.mul(x, x), ev.mul(y, y)), ev.mul(z, z))
+    alift, blift = lift(aex, aey, aez), lift(bex, bey, bez)
+    clift, dlift = lift(cex, cey, cez), lift(dex, dey, dez)
+    return sign(ev.add(ev.sub(ev.mul(dlift, abc), ev.mul(clift, dab)),
+                       ev.sub(ev.mul(blift, cda), ev.mul(alift, bcd))))
+
+
+BOUNDS = {  # bits, derived per intermediate in bitcounts.md; points, coordinates per point
+    "orient2d": (orient, 3, 2, lambda b: 2 * b + 3),
+    "compare_distance": (distance, 3, 2, lambda b: 2 * b + 3),
+    "incircle": (incircle, 4, 2, lambda b: 4 * b + 8),
+    "incircle_cosine": (cosine, 4, 2, lambda b: 8 * b + 12),
+    "orient3d": (orient3d, 4, 3, lambda b: 3 * b + 6),
+    "insphere": (insphere, 5, 3, lambda b: 5 * b + 12),
 }
 
 
-def configurations(npts, b, rng, count):
+def configurations(npts, dim, b, rng, count):
     hi = (1 << b) - 1
     extremes = [-hi, hi, 0, 1 - hi, hi - 1]
     for _ in range(count):
         if rng.random() < 0.5:  # extremes maximise the differences and the lifts
-            yield [(rng.choice(extremes), rng.choice(extremes)) for _ in range(npts)]
+            yield [tuple(rng.choice(extremes) for _ in range(dim)) for _ in range(npts)]
         else:
-            yield [(rng.randint(-hi, hi), rng.randint(-hi, hi)) for _ in range(npts)]
+            yield [tuple(rng.randint(-hi, hi) for _ in range(dim)) for _ in range(npts)]
 
 
 def main():
     rng = random.Random(2025)
     failed = False
-    for name, (fn, npts, bound) in BOUNDS.items():
+    for name, (fn, npts, dim, bound) in BOUNDS.items():
         for b in (2, 3, 4):
             p_ok = bound(b)
-            configs = list(configurations(npts, b, rng, 4000))
+            configs = list(configurations(npts, dim, b, rng, 4000))
             if name in ("orient2d", "compare_distance") and b == 2:  # exhaustive, 7 x 7 grid
                 grid = [(x, y) for x in range(-3, 4) for y in range(-3, 4)]
                 configs = [list(t) for t in itertools.product(grid, repeat=3)]

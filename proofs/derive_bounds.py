@@ -233,13 +233,19 @@ def main():
     # ---- expansion range (bounds.md#expansion-range) -------------------------------------
     for script, name, degree, key in (("range_orient.g", "orient_max_log", 2, None),
                                       ("range_incircle.g", "incircle_max_log", 4, "tree"),
-                                      ("range_distance.g", "distance_max_log", 2, None)):
+                                      ("range_distance.g", "distance_max_log", 2, None),
+                                      # adaptive3d.cpp (bounds.md#expansion-range)
+                                      ("range_orient3d.g", "orient3d_max_log", 3, "tree"),
+                                      ("range_insphere.g", "insphere_max_log", 5, "tree")):
         # (incircle_cosine's exact stage uses cpp_int, which has no range limit; its dot
         # products run the orient2d-shaped stages under orient_max_log.)
         goals = run_gappa(gappa, script)
         k = magnitude(goals, key or next(iter(goals)))
         # K 2^(d (E + 1)) <= 2^1023
-        claims.append((name, "max", Q(floor((1023 - log2(k)) / degree) - 1)))
+        max_log = floor((1023 - log2(k)) / degree) - 1
+        if k * Q(2) ** (degree * (max_log + 1)) > Q(2) ** 1023:  # log2 in floating point
+            sys.exit(f"{script}: {name} = {max_log} fails K 2^(d (E + 1)) <= 2^1023")
+        claims.append((name, "max", Q(max_log)))
         # expansion_safe's granularity test needs at least the polynomial's degree
         # (sympy/cosine_check.py checks these degrees symbolically).
         claims.append((name.replace("max_log", "degree"), "min", Q(degree)))
@@ -432,6 +438,181 @@ def main():
     kappa_c = (1 + e) ** 14 / (1 - c_2) ** 2
     require_dw((1 - e) ** 16 * z_lo ** 8 * e ** 2 >= normal, "cosine: t and the bound are normal")
     claims.append(("cos_dw", "min", c_diff * kappa_c * (1 + e) / (1 - e)))
+
+    # ==== The predicates of space (adaptive3d.cpp) ==========================================
+
+    def require_3d(ok, what):
+        if not ok:
+            sys.exit(f"orient3d / insphere: range condition fails: {what}")
+
+    # Every absolute (underflow) term below is carried by at most sixteen factors (1 + e) on
+    # its way to the determinant: a partner's exact value against its computed one, and each
+    # later rounding's relative error, which scales the absolute term it carries (bounds.md).
+    carry = (1 + e) ** 16
+
+    # ---- orient3d, stage A (bounds.md#orient3d) -------------------------------------------
+    # One term z * fl(P1 - P2) against |z| sa, sa = |P1| + |P2| (computed z, products; by R2
+    # each exact monomial is the computed product times three roundings): the minor errs by
+    # e |m| + d3 sa with |m| <= (1+e) sa; z by d1; the product by z and the first sum one
+    # rounding each (e (1+e)^2, as for incircle); the last sum e |D|, free.
+    c_o3 = ((1 + delta(1)) * (e * (1 + e) + delta(3))  # the minor, scaled by |Z| <= (1+e)|z|
+            + delta(1) * (1 + e)                        # z's own rounding, |m| <= (1+e) sa
+            + e * (1 + e) ** 2                          # the product z * m
+            + e * (1 + e) ** 2)                         # the first sum
+    # (1+e)^4: sum |z| sa against the computed permanent (the pair's sum, the product by
+    # |z|, the two sums); (1+e)^2 the bound's two roundings; 1/(1-e) the sign argument.
+    claims.append(("o3d_a", "min", c_o3 * (1 + e) ** 6 / (1 - e)))
+    # Underflow (bounds.md#underflow-3d), in units of eta against S = Z + 1 (Z = sum |z|):
+    # per |z|, the minor's two products and its difference (Gappa's eta; in fact exact, (S));
+    # constant: the three products by z and the two sums, and the permanent's three products
+    # through c_o3 (sum |z| sa <= (1+e)^4 T + 3 (1+e) eta).
+    o3_z = 3 * carry
+    o3_1 = 5 * carry + 3 * (1 + e) * c_o3
+    # The bound: fl(o3d_a T) and fl(u S~) may each lose eta, S~ >= (Z + 1) / (1+e)^2, the
+    # bound's sum and the sign argument (1-e)/(1+e).
+    claims.append(("underflow_orient3d", "min",
+                   eta * max(o3_z, o3_1 + 2 * (1 - e) / (1 + e)) * (1 + e) ** 4 / (1 - e)))
+
+    # ---- the skip rule of the underflow term (bounds.md#underflow-3d) ----------------------
+    # filter_bound (adaptive3d.cpp) and incircle's stage A (adaptive.cpp) use `first` alone
+    # when first >= skip_first and spread < skip_spread (hypotheses, read from the code by
+    # the checker). Then u spread < u skip_spread <= skip_first 2^-54, so fl(u spread) <=
+    # skip_first 2^-54 < ulp(first) / 2 and fl(first + fl(u spread)) == first: the bound the
+    # derivations assume, the same double. That needs u <= skip_first 2^-54 / skip_spread.
+    skip_first, skip_spread = Q(2) ** -960, Q(2) ** 46
+    claims.append(("skip_first_min", "min", skip_first))
+    claims.append(("skip_spread_max", "max", skip_spread))
+    for name in ("underflow_incircle", "underflow_orient3d", "underflow_insphere"):
+        claims.append((name, "max", skip_first * Q(2) ** -54 / skip_spread))
+
+    # ---- orient3d, double-word stage (bounds.md#orient3d-double-word) ----------------------
+    # The rules of bounds.md#incircle-double-word; every nonzero high part of a difference in
+    # [o3_lo, o3_hi] (adaptive3d.cpp's range test).
+    o3_lo, o3_hi = Q(2) ** -220, Q(2) ** 220
+    claims.append(("o3d_dw_min", "min", o3_lo))
+    claims.append(("o3d_dw_max", "max", o3_hi))
+    w_lo, w_hi = o3_lo * (1 - e), o3_hi * (1 + e)
+    minor_hi = 2 * w_hi ** 2 * (1 + e) ** 4
+    require_3d(minor_hi <= Q(2) ** 995 and 3 * w_hi * minor_hi * (1 + e) ** 6 <= Q(2) ** 1021,
+               "orient3d double words: no overflow, Dekker's split applies")
+    u_dw = u_low + u_tp
+    o_1 = beta + u_dw / w_lo ** 2                        # the minors' products
+    o_2 = o_1 * (1 + alpha) + alpha                      # the minors
+    o_3 = (1 + beta) * (1 + o_2) - 1 + u_dw / w_lo ** 3  # z * minor (z exact)
+    o_det = (o_3 * (1 + alpha) + alpha) * (1 + alpha) + alpha
+    # T <= kappa t: |X| <= (1+e) |X.hi| for the three factors, five roundings (R2: every
+    # nonzero intermediate is at least (1 - e)^5 w_lo^3, normal).
+    kappa_o3 = (1 + e) ** 8
+    require_3d((1 - e) ** 5 * w_lo ** 3 * e ** 2 >= normal,
+               "orient3d: t and the bound are normal")
+    claims.append(("o3d_dw", "min", o_det * kappa_o3 * (1 + e) / (1 - e)))
+
+    # ---- insphere, stage A (bounds.md#insphere) -------------------------------------------
+    # One orientation o = fl(fl(t1 +- t2) + t3) against K = sum |z| sa: c_o3 and its last
+    # sum, e |o| with |o| <= (1+e)^4 K.
+    c_orient = c_o3 + e * (1 + e) ** 4
+    # One term lift * o against l K (computed lift and orientation): the lift errs by d5
+    # relative to the computed one (R2: the difference squared, the square, two sums of
+    # nonnegative terms); the product and the inner sum one rounding each (e (1+e)^5, the
+    # incircle pattern); the last sum free.
+    c_isp = ((1 + delta(5)) * c_orient + delta(5) * (1 + e) ** 4
+             + e * (1 + e) ** 5 + e * (1 + e) ** 5)
+    # (1+e)^8: sum l K against the permanent (the pair's sum, the product by |z|, the
+    # factor's two sums, the product by the lift, the three sums); (1+e)^2 the bound's two
+    # roundings; 1/(1-e) the sign argument.
+    claims.append(("isp_a", "min", c_isp * (1 + e) ** 10 / (1 - e)))
+    # Underflow (bounds.md#underflow-3d), in units of eta against S = L Z + L + C + 1:
+    #  L Z: each minor's two products and its difference, scaled by |z| and the lift
+    #       (sum_p l_p Z_p <= L Z); the lift's absolute error g <= 5 (1+e)^2 eta times the
+    #       orientation's relative error c_orient K_p, K_p <= 2 L Z_p, sum_p Z_p = 3 Z;
+    #  L:   each orientation's three products by z and two sums, scaled by the lift; the
+    #       permanent's twelve products by |z| through c_isp (bounds.md);
+    #  C:   each lift's three squares and two sums, scaled by |o_p|;
+    #  1:   the four products lift * o and the three sums; the permanent's four products
+    #       through c_isp; g times the orientation's absolute terms (eta^2 Z_p, Z_p < 2^1026
+    #       when every value is finite).
+    g_lift = 5 * (1 + e) ** 2
+    iu_lz = carry * (3 + g_lift * c_orient * 2 * 3)
+    iu_l = carry * 5 + 3 * (1 + e) * c_isp
+    iu_c = carry * 5
+    iu_1 = (carry * (7 + 4 * g_lift * (3 * carry * Q(2) ** 1026 + 5) * eta)
+           + 4 * (1 + e) ** 4 * c_isp)
+    # The bound: S~ >= L Z/(1+e)^7 + (L + C)/(1+e)^4 + (1 - eta)/(1+e)^2, fl(u S~) >= u S~ /
+    # (1+e) - eta, fl(isp_a T) loses at most eta, the bound's sum and the sign argument.
+    need = max(iu_lz * (1 + e) ** 9, iu_l * (1 + e) ** 6, iu_c * (1 + e) ** 6,
+               (iu_1 + 2 * (1 - e) / (1 + e)) * (1 + e) ** 4 / (1 - eta))
+    claims.append(("underflow_insphere", "min", eta * need / (1 - e)))
+
+    # ---- insphere, semi-static filter (bounds.md#insphere-semi-static) ---------------------
+    # M = max |rounded difference|; hypotheses (checked against the code): M in [s5_lo, s5_hi].
+    # A quantity of degree k is measured in units of M^k; an absolute eta in it is then at
+    # most eta_k = eta / s5_lo^k (every bound below grows with the eta_k: M = s5_lo is the
+    # worst case). Each step: |computed - exact (in the rounded differences)| <= e_*, and
+    # |computed| <= b_*; a rounding adds e times the computed operands' bound plus eta_k
+    # (Gappa's eta, charged to every operation, although (S) makes sums exact).
+    s5_lo, s5_hi = Q(2) ** -190, Q(2) ** 200
+    claims.append(("isp_static_min", "min", s5_lo))
+    claims.append(("isp_static_max", "max", s5_hi))
+
+    def semi_static_minor(eta_2, eta_3):
+        """Error and magnitude bounds of z * (x y - x' y'), all |x| <= 1."""
+        e_p, b_p = e + eta_2, (1 + e) + eta_2                     # a product, |x y| <= 1
+        e_m = 2 * e_p + e * 2 * b_p + eta_2                        # the minor's difference
+        b_m = (1 + e) * 2 * b_p + eta_2
+        e_t = e_m + e * b_m + eta_3                                # |z| <= 1, the product
+        b_t = (1 + e) * b_m + eta_3
+        return e_t, b_t
+
+    eta5 = [eta / s5_lo ** k for k in range(6)]         # eta in units of M^k
+    e_t5, b_t5 = semi_static_minor(eta5[2], eta5[3])
+    # The orientation (|z| <= 1): s = t1 +- t2, o = s + t3.
+    e_s5, b_s5 = 2 * e_t5 + e * 2 * b_t5 + eta5[3], (1 + e) * 2 * b_t5 + eta5[3]
+    e_o5 = e_s5 + e_t5 + e * (b_s5 + b_t5) + eta5[3]
+    b_o5 = (1 + e) * (b_s5 + b_t5) + eta5[3]
+    # The lift (squares of |x| <= 1): q1 + q2, then + q3.
+    e_q, b_q = e + eta5[2], (1 + e) + eta5[2]
+    e_12, b_12 = 2 * e_q + e * 2 * b_q + eta5[2], (1 + e) * 2 * b_q + eta5[2]
+    e_l5 = e_12 + e_q + e * (b_12 + b_q) + eta5[2]
+    b_l5 = (1 + e) * (b_12 + b_q) + eta5[2]
+    # lift * o against lift(x) O(x), |lift(x)| <= 3, |O(x)| <= 6 (in the rounded differences).
+    e_p5 = e_l5 * b_o5 + 3 * e_o5 + e * b_l5 * b_o5 + eta5[5]
+    b_p5 = (1 + e) * b_l5 * b_o5 + eta5[5]
+    # The two inner sums; the last sum free (charged Gappa's eta).
+    e_det5 = 2 * (2 * e_p5 + e * 2 * b_p5 + eta5[5]) + eta5[5]
+    # D(x) against D(X): 72 monomials, each at most M^5, five rounded differences each.
+    total5 = 72 * ((1 - e) ** -5 - 1) + e_det5
+    # The bound fl(isp_static fl(fl(m2 m2) M)), m2 = fl(M M): four roundings down, all normal
+    # (isp_static >= 1024 eps, as claimed); the sign argument 1/(1-e). No overflow: every
+    # intermediate is below 4 b_p5 M^5.
+    require_3d(s5_lo ** 5 * Q(1024) * e * (1 - e) ** 4 >= normal,
+               "insphere semi-static bound normal")
+    require_3d(8 * b_p5 * s5_hi ** 5 < huge, "insphere semi-static: no overflow")
+    claims.append(("isp_static", "min", total5 / (1 - e) ** 5))
+
+    # ---- insphere, double-word stage (bounds.md#insphere-double-word) ----------------------
+    i5_lo, i5_hi = Q(2) ** -160, Q(2) ** 160
+    claims.append(("isp_dw_min", "min", i5_lo))
+    claims.append(("isp_dw_max", "max", i5_hi))
+    v_lo, v_hi = i5_lo * (1 - e), i5_hi * (1 + e)
+    orient_hi = 3 * v_hi * 2 * v_hi ** 2 * (1 + e) ** 8   # |orientation~| (and 3 v_hi^2 lifts)
+    lift_hi5 = 3 * v_hi ** 2 * (1 + e) ** 8
+    require_3d(orient_hi <= Q(2) ** 995
+               and 4 * lift_hi5 * orient_hi * (1 + e) ** 6 <= Q(2) ** 1021,
+               "insphere double words: no overflow, Dekker's split applies")
+    i_1 = beta + u_dw / v_lo ** 2                        # the minors' products, the squares
+    i_2 = i_1 * (1 + alpha) + alpha                      # the minors
+    i_3 = (1 + beta) * (1 + i_2) - 1 + u_dw / v_lo ** 3  # z * minor
+    i_o = (i_3 * (1 + alpha) + alpha) * (1 + alpha) + alpha        # the orientations
+    i_lift = (i_1 * (1 + alpha) + alpha) * (1 + alpha) + alpha     # the lifts
+    i_5 = (1 + beta) * (1 + i_lift) * (1 + i_o) - 1 + u_dw / v_lo ** 5
+    i_det = (i_5 * (1 + alpha) + alpha) * (1 + alpha) + alpha
+    # T <= kappa t: each lift at most (1+e) lift.hi / (1 - i_lift), |X| <= (1+e) |X.hi| for
+    # the three other factors, nine roundings (R2: every nonzero intermediate is at least
+    # (1 - e)^12 v_lo^5, normal).
+    kappa_i5 = (1 + e) ** 13 / (1 - i_lift)
+    require_3d((1 - e) ** 12 * v_lo ** 5 * e ** 2 >= normal,
+               "insphere: t and the bound are normal")
+    claims.append(("isp_dw", "min", i_det * kappa_i5 * (1 + e) / (1 - e)))
 
     with open(output, "w") as f:
         f.write("# Proven bounds, written by proofs/derive_bounds.py from Gappa's output.\n")

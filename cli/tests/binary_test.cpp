@@ -123,7 +123,9 @@ TEST(ExidelBinary, ErrorNamesTheLineAndStopsOutput) {
         {"orient2d 0 0 1 0 1e400 1", "outside the range"},
         {"orient2d 0 0 1 0 0", "takes 6 coordinates, got 5"},
         {"incircle 0 0 1 0 0 1 1", "takes 8 coordinates, got 7"},
-        {"orient3d 0 0 1 0 0 1", "unknown predicate 'orient3d'"},
+        {"orient3d 0 0 1 0 0 1", "orient3d takes 12 coordinates, got 6"},
+        {"insphere 0 0 0 1 0 0 0 1 0 0 0 -1 0 0 inf", "coordinate 15: 'inf' is not a finite"},
+        {"orient4d 0 0 1 0 0 1", "unknown predicate 'orient4d'"},
         {"orient2d 0 0 1 0 0x1q3 1", "not a number"},
     };
     for (const Case& c : cases) {

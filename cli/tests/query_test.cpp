@@ -118,6 +118,28 @@ TEST(ParseQueryLine, CompareDistanceTakesThreePoints) {
               std::string::npos);
 }
 
+TEST(ParseQueryLine, SpacePredicatesTakeThreeCoordinatesPerPoint) {
+    const ParsedLine o = parse_query_line("orient3d 1 2 3 4 5 6 7 8 9 0x1p-3 11 12 # c");
+    ASSERT_EQ(o.kind, ParsedLine::Kind::query) << o.error;
+    ASSERT_TRUE(o.query.space.has_value());
+    EXPECT_EQ(*o.query.space, SpacePredicate::orient3d);
+    EXPECT_EQ(o.query.points3[3], (Point3{0.125, 11, 12}));
+    const ParsedLine i = parse_query_line("insphere 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15");
+    ASSERT_EQ(i.kind, ParsedLine::Kind::query) << i.error;
+    EXPECT_EQ(*i.query.space, SpacePredicate::insphere);
+    EXPECT_EQ(i.query.points3[4], (Point3{13, 14, 15}));
+    EXPECT_NE(parse_query_line("insphere 1 2 3 4 5 6 7 8 9 10 11 12").error.find(
+                  "insphere takes 15 coordinates, got 12"),
+              std::string::npos);
+    EXPECT_NE(parse_query_line("orient3d 0 0 0 1 0 0 0 1 0 0 0 nan").error.find(
+                  "coordinate 12: 'nan' is not a finite"),
+              std::string::npos);
+    // The kernels' answers through the parsed query: d below the plane of a CCW abc.
+    const ParsedLine below = parse_query_line("orient3d 0 0 0 1 0 0 0 1 0 0 0 -1");
+    EXPECT_EQ(evaluate(AdaptiveKernel{}, below.query), Sign::positive);
+    EXPECT_EQ(evaluate(GmpExactKernel{}, below.query), Sign::positive);
+}
+
 TEST(ParseQueryLine, Errors) {
     const auto error_of = [](std::string_view line) {
         const ParsedLine p = parse_query_line(line);

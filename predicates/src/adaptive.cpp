@@ -13,6 +13,7 @@
 #include "exidel/predicates/constants.hpp"
 #include "exidel/predicates/exact.hpp"
 #include "adaptive_filter.hpp"
+#include "adaptive_stages.hpp"
 #include "adaptive_unchecked.hpp"
 #include "double_word.hpp"
 #include "expansion.hpp"
@@ -26,32 +27,12 @@ namespace exidel {
 namespace {
 
 using detail::Expansion;
+using detail::exact_differences;
+using detail::exact_small_differences;
+using detail::expansion_safe;
 using detail::filter_decides;
 using detail::IncircleDifferences;
 namespace eb = bounds;
-
-// ---- When is expansion arithmetic error-free? -------------------------------------------
-// Every nonzero double v is a multiple of 2^g(v), g(v) = max(ilogb(v) - 52, -1074). A
-// polynomial of degree d in the coordinates then only ever produces multiples of
-// 2^(d * min g), so Two-Sum and Two-Product never underflow when d * min g >= -1074; and
-// with every |v| < 2^(max_log + 1) no intermediate of the formulas overflows
-// (proofs/bounds.md#expansion-range derives max_log per predicate).
-//
-// The exponent is read from the bits rather than with std::ilogb, a library call that
-// costs a large share of an exact tie of compare_distance (docs/measurements.md).
-// A subnormal (exponent field 0) is given e = -1023 instead of its true ilogb < -1022:
-// the only uses are e <= max_log, true either way, and g = max(e - 52, -1074) = -1074,
-// equal either way.
-bool expansion_safe(std::initializer_list<double> coordinates, int degree, int max_log) {
-    int g_min = INT_MAX, e_max = INT_MIN;
-    for (double v : coordinates) {
-        if (v == 0) continue;
-        const int e = detail::decode(v).biased_exponent - 1023;
-        e_max = std::max(e_max, e);
-        g_min = std::min(g_min, std::max(e - 52, -1074));
-    }
-    return e_max == INT_MIN || (e_max <= max_log && degree * g_min >= -1074);
-}
 
 constexpr int orient_max_log = 500;    // degree 2: 2 terms of (2^(E+2))^2 < 2^1023
 constexpr int incircle_max_log = 250;  // degree 4: 3 terms of 2^(2E+5) * 2^(2E+6) < 2^1023
@@ -63,28 +44,6 @@ Expansion lift_expansion(double v) { return Expansion(v); }
 template <std::size_t N>
 Sign sign_of_components(const double (&x)[N]) {
     return Expansion::from_components(x).sign();
-}
-
-// ---- exact ties in small integers (small_integers.hpp) ----------------------------------
-
-/// Every rounded difference exact: its Two-Diff tail is zero.
-template <int N>
-bool exact_differences(const double (&minuend)[N], const double (&subtrahend)[N],
-                       const double (&difference)[N]) {
-    bool exact = true;
-    for (int i = 0; i < N; ++i) {
-        exact &= detail::two_diff_tail(minuend[i], subtrahend[i], difference[i]) == 0;
-    }
-    return exact;
-}
-
-/// The rounded differences as integers sharing one power of two, when every one is exact
-/// and all fit in a window of Bits bits.
-template <int Bits = detail::small_bits, int N>
-bool exact_small_differences(const double (&minuend)[N], const double (&subtrahend)[N],
-                             const double (&difference)[N], std::int64_t (&out)[N]) {
-    return exact_differences(minuend, subtrahend, difference) &&
-           detail::to_small_integers<Bits>(difference, out);
 }
 
 bool same_point(Point2 p, Point2 q) { return p.x == q.x && p.y == q.y; }
@@ -231,17 +190,8 @@ int incircle_of_rounded_differences(double adx, double ady, double bdx, double b
 // every nonzero difference is in [icc_dw_min, icc_dw_max], the range the proof covers.
 
 using detail::dw::Word;
+using detail::in_double_word_range;
 
-/// Every nonzero |high part| in [lo, hi], the range a double-word stage is proven for.
-/// Negated comparisons, so that an infinite difference (or NaN) fails too.
-template <int N>
-bool in_double_word_range(const Word (&w)[N], double lo, double hi) {
-    for (const Word& v : w) {
-        const double m = std::fabs(v.hi);
-        if (!(m <= hi) || (m != 0 && m < lo)) return false;
-    }
-    return true;
-}
 
 template <bool Fma>
 [[gnu::always_inline]] inline bool incircle_double_word_eval(const Word (&w)[6], Sign& sign) {

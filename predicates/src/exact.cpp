@@ -34,11 +34,12 @@ class AlignedLift {
 public:
     AlignedLift(std::initializer_list<Point2> points) {
         for (const Point2& p : points) {
-            for (double v : {p.x, p.y}) {
-                // v = m * 2^q, m an integer of at most 53 bits (binary64.hpp).
-                const detail::Binary64 d = detail::decode(v);
-                if (d.significand != 0) grid_ = std::min(grid_, d.exponent);
-            }
+            for (double v : {p.x, p.y}) lower_grid(v);
+        }
+    }
+    AlignedLift(std::initializer_list<Point3> points) {
+        for (const Point3& p : points) {
+            for (double v : {p.x, p.y, p.z}) lower_grid(v);
         }
     }
     Int operator()(double v) const {
@@ -50,6 +51,12 @@ public:
     }
 
 private:
+    void lower_grid(double v) {
+        // v = m * 2^q, m an integer of at most 53 bits (binary64.hpp).
+        const detail::Binary64 d = detail::decode(v);
+        if (d.significand != 0) grid_ = std::min(grid_, d.exponent);
+    }
+
     int grid_ = 1 << 20;  // larger than any exponent: every nonzero value lowers it
 };
 
@@ -82,6 +89,18 @@ template <ExactBackend B>
 Sign ExactKernel<B>::compare_distance(Point2 c, Point2 p, Point2 q) {
     using Int = typename IntegerOf<B>::type;
     return detail::compare_distance_formula<Int>(c, p, q, AlignedLift<Int>{c, p, q});
+}
+
+template <ExactBackend B>
+Sign ExactKernel<B>::orient3d(Point3 a, Point3 b, Point3 c, Point3 d) {
+    using Int = typename IntegerOf<B>::type;
+    return detail::orient3d_formula<Int>(a, b, c, d, AlignedLift<Int>{a, b, c, d});
+}
+
+template <ExactBackend B>
+Sign ExactKernel<B>::insphere(Point3 a, Point3 b, Point3 c, Point3 d, Point3 e) {
+    using Int = typename IntegerOf<B>::type;
+    return detail::insphere_formula<Int>(a, b, c, d, e, AlignedLift<Int>{a, b, c, d, e});
 }
 
 template struct ExactKernel<ExactBackend::gmp>;

@@ -38,6 +38,16 @@ Sign FloatingKernel<T>::compare_distance(Point2 c, Point2 p, Point2 q) noexcept 
     return detail::compare_distance_formula<T>(c, p, q, lift_to<T>);
 }
 
+template <class T>
+Sign FloatingKernel<T>::orient3d(Point3 a, Point3 b, Point3 c, Point3 d) noexcept {
+    return detail::orient3d_formula<T>(a, b, c, d, lift_to<T>);
+}
+
+template <class T>
+Sign FloatingKernel<T>::insphere(Point3 a, Point3 b, Point3 c, Point3 d, Point3 e) noexcept {
+    return detail::insphere_formula<T>(a, b, c, d, e, lift_to<T>);
+}
+
 template struct FloatingKernel<double>;
 template struct FloatingKernel<long double>;
 

@@ -83,4 +83,64 @@ Sign incircle_cosine_formula(Point2 a, Point2 b, Point2 c, Point2 d, Lift lift) 
                               adx * adx + ady * ady, bdx * bdx + bdy * bdy);
 }
 
+// ---- The predicates of space ----------------------------------------------------------
+
+/// Shewchuk's orient3d with d as the pivot, det(a - d, b - d, c - d) expanded along z:
+///   adz (bdx cdy - cdx bdy) + bdz (cdx ady - adx cdy) + cdz (adx bdy - bdx ady).
+template <class N>
+N orient3d_of_differences(const N& adx, const N& ady, const N& adz, const N& bdx, const N& bdy,
+                          const N& bdz, const N& cdx, const N& cdy, const N& cdz) {
+    return adz * (bdx * cdy - cdx * bdy) + bdz * (cdx * ady - adx * cdy) +
+           cdz * (adx * bdy - bdx * ady);
+}
+
+template <class N, class Lift>
+Sign orient3d_formula(Point3 a, Point3 b, Point3 c, Point3 d, Lift lift) {
+    const N dx = lift(d.x), dy = lift(d.y), dz = lift(d.z);
+    return sign_of(orient3d_of_differences<N>(lift(a.x) - dx, lift(a.y) - dy, lift(a.z) - dz,
+                                              lift(b.x) - dx, lift(b.y) - dy, lift(b.z) - dz,
+                                              lift(c.x) - dx, lift(c.y) - dy, lift(c.z) - dz));
+}
+
+/// Shewchuk's insphere with e as the pivot: the 4 x 4 determinant of the rows
+/// (p - e, |p - e|^2) for p = a, b, c, d, expanded along the lifts, with the 3 x 3
+/// orientations of the differences:
+///   abc = aez bc - bez ac + cez ab   (ab = aex bey - bex aey, ...)
+///   det = (dlift abc - clift dab) + (blift cda - alift bcd).
+/// Positive iff e is strictly inside the sphere through a, b, c, d when orient3d(a, b, c, d)
+/// is positive.
+template <class N>
+struct InsphereDifferences {
+    N aex, aey, aez, bex, bey, bez, cex, cey, cez, dex, dey, dez;
+};
+
+template <class N>
+N insphere_of_differences(const InsphereDifferences<N>& v) {
+    const auto& [aex, aey, aez, bex, bey, bez, cex, cey, cez, dex, dey, dez] = v;
+    const N ab = aex * bey - bex * aey;
+    const N bc = bex * cey - cex * bey;
+    const N cd = cex * dey - dex * cey;
+    const N da = dex * aey - aex * dey;
+    const N ac = aex * cey - cex * aey;
+    const N bd = bex * dey - dex * bey;
+    const N abc = aez * bc - bez * ac + cez * ab;
+    const N bcd = bez * cd - cez * bd + dez * bc;
+    const N cda = cez * da + dez * ac + aez * cd;
+    const N dab = dez * ab + aez * bd + bez * da;
+    const N alift = aex * aex + aey * aey + aez * aez;
+    const N blift = bex * bex + bey * bey + bez * bez;
+    const N clift = cex * cex + cey * cey + cez * cez;
+    const N dlift = dex * dex + dey * dey + dez * dez;
+    return (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+}
+
+template <class N, class Lift>
+Sign insphere_formula(Point3 a, Point3 b, Point3 c, Point3 d, Point3 e, Lift lift) {
+    const N ex = lift(e.x), ey = lift(e.y), ez = lift(e.z);
+    return sign_of(insphere_of_differences<N>(
+        {lift(a.x) - ex, lift(a.y) - ey, lift(a.z) - ez, lift(b.x) - ex, lift(b.y) - ey,
+         lift(b.z) - ez, lift(c.x) - ex, lift(c.y) - ey, lift(c.z) - ez, lift(d.x) - ex,
+         lift(d.y) - ey, lift(d.z) - ez}));
+}
+
 }  // namespace exidel::detail

@@ -93,6 +93,12 @@ Sign incircle_cosine_mpfr(Point2 a, Point2 b, Point2 c, Point2 d, mpfr_prec_t bi
 Sign compare_distance_mpfr(Point2 c, Point2 p, Point2 q, mpfr_prec_t bits) {
     return detail::compare_distance_formula<MpfrValue>(c, p, q, MpfrLift{bits});
 }
+Sign orient3d_mpfr(Point3 a, Point3 b, Point3 c, Point3 d, mpfr_prec_t bits) {
+    return detail::orient3d_formula<MpfrValue>(a, b, c, d, MpfrLift{bits});
+}
+Sign insphere_mpfr(Point3 a, Point3 b, Point3 c, Point3 d, Point3 e, mpfr_prec_t bits) {
+    return detail::insphere_formula<MpfrValue>(a, b, c, d, e, MpfrLift{bits});
+}
 }  // namespace
 
 Sign MpfrKernel::orient2d(Point2 a, Point2 b, Point2 c) const {
@@ -110,6 +116,14 @@ Sign MpfrKernel::incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d) const {
 
 Sign MpfrKernel::compare_distance(Point2 c, Point2 p, Point2 q) const {
     return detail::in_standard_environment<compare_distance_mpfr>(c, p, q, mpfr_prec_t{bits_});
+}
+
+Sign MpfrKernel::orient3d(Point3 a, Point3 b, Point3 c, Point3 d) const {
+    return detail::in_standard_environment<orient3d_mpfr>(a, b, c, d, mpfr_prec_t{bits_});
+}
+
+Sign MpfrKernel::insphere(Point3 a, Point3 b, Point3 c, Point3 d, Point3 e) const {
+    return detail::in_standard_environment<insphere_mpfr>(a, b, c, d, e, mpfr_prec_t{bits_});
 }
 
 }  // namespace exidel

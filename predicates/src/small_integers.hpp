@@ -184,4 +184,44 @@ inline int cosine_small_sign(const std::int64_t (&d)[8]) noexcept {
     return (right < left) - (left < right);
 }
 
+// ---- The predicates of space ------------------------------------------------------------
+
+/// orient3d of integer differences (a - d, b - d, c - d) below 2^small_bits: each 2 x 2
+/// minor below 2^61 (int64), each z x minor below 2^91, their sum below 2^93 (signed 128
+/// bits).
+inline int orient3d_small_sign(const std::int64_t (&d)[9]) noexcept {
+    static_assert(2 * small_bits + 1 <= 62, "a minor fits in 63 bits");
+    static_assert(3 * small_bits + 3 <= 127, "three z x minor products and their sum fit");
+    const auto [adx, ady, adz, bdx, bdy, bdz, cdx, cdy, cdz] = d;
+    const i128 det = i128{adz} * (bdx * cdy - cdx * bdy) + i128{bdz} * (cdx * ady - adx * cdy) +
+                     i128{cdz} * (adx * bdy - bdx * ady);
+    return (det > 0) - (det < 0);
+}
+
+/// The window of insphere's integers: degree 5 has to fit in signed 128 bits.
+inline constexpr int insphere_bits = 24;
+
+/// insphere of integer differences (p - e for p = a, b, c, d) below 2^insphere_bits, in
+/// formulas.hpp's order: minors below 2^49 (int64), each z x minor below 2^73 and each
+/// 3 x 3 orientation (three of them) below 2^75, lifts below 3 * 2^48 < 2^50 (int64), each
+/// lift x orientation below 2^125, the two differences of two below 2^126 and the sum
+/// below 2^127 (signed 128 bits).
+inline int insphere_small_sign(const std::int64_t (&d)[12]) noexcept {
+    static_assert(5 * insphere_bits + 7 <= 127, "the determinant fits in signed 128 bits");
+    const auto [aex, aey, aez, bex, bey, bez, cex, cey, cez, dex, dey, dez] = d;
+    const std::int64_t ab = aex * bey - bex * aey, bc = bex * cey - cex * bey,
+                       cd = cex * dey - dex * cey, da = dex * aey - aex * dey,
+                       ac = aex * cey - cex * aey, bd = bex * dey - dex * bey;
+    const i128 abc = i128{aez} * bc - i128{bez} * ac + i128{cez} * ab;
+    const i128 bcd = i128{bez} * cd - i128{cez} * bd + i128{dez} * bc;
+    const i128 cda = i128{cez} * da + i128{dez} * ac + i128{aez} * cd;
+    const i128 dab = i128{dez} * ab + i128{aez} * bd + i128{bez} * da;
+    const std::int64_t alift = aex * aex + aey * aey + aez * aez;
+    const std::int64_t blift = bex * bex + bey * bey + bez * bez;
+    const std::int64_t clift = cex * cex + cey * cey + cez * cez;
+    const std::int64_t dlift = dex * dex + dey * dey + dez * dez;
+    const i128 det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+    return (det > 0) - (det < 0);
+}
+
 }  // namespace exidel::detail

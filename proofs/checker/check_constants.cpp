@@ -2,21 +2,24 @@
 // proofs establish (proofs/README.md). The proven values come from the file that
 // proofs/derive_bounds.py writes from Gappa's output; the code's values come from
 // constants.hpp itself (included, so the compiler reads the real ones) and, for the range
-// limits that live in adaptive.cpp, from that source file.
+// limits and the underflow term's skip rule that live in adaptive.cpp and adaptive3d.cpp,
+// from those source files.
 //
-// Usage: check_constants BOUNDS_FILE ADAPTIVE_CPP CONSTANTS_HPP
+// Usage: check_constants BOUNDS_FILE ADAPTIVE_CPP ADAPTIVE3D_CPP CONSTANTS_HPP
 // Exit code 0 iff every claim holds, every constant has a claim, and every
 // `inline constexpr double` of constants.hpp (but epsilon) is in the list below.
 // A claim marked `if=CONDITION` is proven only if that unproven statement (proofs/bounds.md)
 // holds: it is checked like the others, and reported as conditional.
 #include <boost/multiprecision/cpp_int.hpp>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <map>
 #include <regex>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "exidel/predicates/constants.hpp"
@@ -46,6 +49,19 @@ std::map<std::string, Rational> code_constants() {
         {"icc_static_max", Rational(b::icc_static_max)},
         {"underflow_orient", Rational(b::underflow_orient)},
         {"underflow_incircle", Rational(b::underflow_incircle)},
+        {"o3d_a", Rational(b::o3d_a)},
+        {"underflow_orient3d", Rational(b::underflow_orient3d)},
+        {"o3d_dw", Rational(b::o3d_dw)},
+        {"o3d_dw_min", Rational(b::o3d_dw_min)},
+        {"o3d_dw_max", Rational(b::o3d_dw_max)},
+        {"isp_a", Rational(b::isp_a)},
+        {"underflow_insphere", Rational(b::underflow_insphere)},
+        {"isp_static", Rational(b::isp_static)},
+        {"isp_static_min", Rational(b::isp_static_min)},
+        {"isp_static_max", Rational(b::isp_static_max)},
+        {"isp_dw", Rational(b::isp_dw)},
+        {"isp_dw_min", Rational(b::isp_dw_min)},
+        {"isp_dw_max", Rational(b::isp_dw_max)},
         {"cos_rel", Rational(b::cos_rel)},
         {"cos_rel_dot", Rational(b::cos_rel_dot)},
         {"cos_max_dot_rel", Rational(b::cos_max_dot_rel)},
@@ -79,17 +95,52 @@ std::string read_file(const std::string& path) {
     return text.str();
 }
 
-// The range limits of adaptive.cpp: `constexpr int orient_max_log = 500;` and the degree
-// passed beside each in `expansion_safe({...}, 2, orient_max_log)`.
-void add_range_limits(const std::string& source, std::map<std::string, Rational>& values) {
+// Sets values[name] = value; a name that one source already defined is an error (two
+// sources must not silently disagree).
+void add_unique(std::map<std::string, Rational>& values, const std::string& name,
+                const Rational& value, const std::string& path) {
+    if (!values.emplace(name, value).second) {
+        throw std::runtime_error(name + " defined twice (again in " + path + ")");
+    }
+}
+
+// The range limits of adaptive.cpp and adaptive3d.cpp: `constexpr int orient_max_log =
+// 500;` and the degree passed beside each in `expansion_safe({...}, 2, orient_max_log)`.
+void add_range_limits(const std::string& source, const std::string& path,
+                      std::map<std::string, Rational>& values) {
     const std::regex limit(R"(constexpr\s+int\s+(\w+_max_log)\s*=\s*(\d+)\s*;)");
     for (std::sregex_iterator it(source.begin(), source.end(), limit), end; it != end; ++it) {
-        values[(*it)[1]] = Rational((*it)[2].str());
+        add_unique(values, (*it)[1], Rational((*it)[2].str()), path);
     }
     const std::regex call(R"(expansion_safe\(\{[^}]*\},\s*(\d+),\s*(\w+)_max_log\))");
     for (std::sregex_iterator it(source.begin(), source.end(), call), end; it != end; ++it) {
-        values[(*it)[2].str() + "_degree"] = Rational((*it)[1].str());
+        // One predicate may call it more than once (orient_max_log: orient2d and the dot
+        // products); every call is checked, so keep the smallest degree.
+        const std::string name = (*it)[2].str() + "_degree";
+        const Rational degree((*it)[1].str());
+        const auto [found, added] = values.emplace(name, degree);
+        if (!added && degree < found->second) found->second = degree;
     }
+}
+
+// The skip rule of the stage-A underflow term (adaptive3d.cpp's filter_bound, incircle's
+// stage A in adaptive.cpp): `first >= 0x1p-960 && spread < 0x1p46`. Every occurrence is
+// checked: the smallest threshold of `first` and the largest of `spread` are kept.
+int add_skip_rules(const std::string& source, std::map<std::string, Rational>& values) {
+    const std::string hex = R"((0x[0-9a-fA-F.]+p[-+]?\d+))";
+    const std::regex rule(R"(first\s*>=\s*)" + hex + R"(\s*&&\s*spread\s*<\s*)" + hex);
+    int found = 0;
+    for (std::sregex_iterator it(source.begin(), source.end(), rule), end; it != end; ++it) {
+        // std::strtod reads hexadecimal floating literals exactly; cpp_rational(double) too.
+        const Rational first(std::strtod((*it)[1].str().c_str(), nullptr));
+        const Rational spread(std::strtod((*it)[2].str().c_str(), nullptr));
+        const auto [f, f_added] = values.emplace("skip_first_min", first);
+        if (!f_added && first < f->second) f->second = first;
+        const auto [s, s_added] = values.emplace("skip_spread_max", spread);
+        if (!s_added && spread > s->second) s->second = spread;
+        ++found;
+    }
+    return found;
 }
 
 // The list in code_constants() is written by hand; this makes sure it is complete.
@@ -117,18 +168,30 @@ std::string show(const Rational& r) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 4) {
-        std::cerr << "usage: check_constants BOUNDS_FILE ADAPTIVE_CPP CONSTANTS_HPP\n";
+    if (argc != 5) {
+        std::cerr << "usage: check_constants BOUNDS_FILE ADAPTIVE_CPP ADAPTIVE3D_CPP "
+                     "CONSTANTS_HPP\n";
         return 2;
     }
     try {
         std::map<std::string, Rational> values = code_constants();
-        add_range_limits(read_file(argv[2]), values);
+        int failures = 0;
+        for (const char* path : {argv[2], argv[3]}) {
+            const std::string source = read_file(path);
+            add_range_limits(source, path, values);
+            // Each file has the rule once (incircle's stage A; filter_bound): a rule the
+            // regular expression no longer finds would go unchecked.
+            if (add_skip_rules(source, values) == 0) {
+                std::cout << "FAIL " << path << ": the underflow term's skip rule (first >= "
+                          << "... && spread < ...) not found\n";
+                ++failures;
+            }
+        }
 
         std::istringstream bounds(read_file(argv[1]));
         std::set<std::string> claimed;
         std::map<std::string, std::set<std::string>> conditional;  // constant -> conditions
-        int failures = unlisted_constants(read_file(argv[3]), values);
+        failures += unlisted_constants(read_file(argv[4]), values);
         std::string line;
         while (std::getline(bounds, line)) {
             if (line.empty() || line[0] == '#') continue;

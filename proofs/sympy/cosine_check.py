@@ -1,5 +1,8 @@
 #!/usr/bin/env python3
-"""Symbolic checks of proofs/cosine.md. Exit code non-zero on the first failed claim.
+"""Symbolic checks of proofs/cosine.md, and of the degrees of every formula of
+predicates/src/formulas.hpp that expansion_safe is given (bounds.md#expansion-range), with
+orient3d and insphere against the determinants they name. Exit code non-zero on the first
+failed claim.
 
 Roles as in cosine.md: incircle_cosine(a, b, c, d) with B = a, C = b, D = c (opposite
 vertex), A = d (new point); u = (a-d).(b-d), v = (a-c).(b-c).
@@ -86,6 +89,53 @@ for name, poly, want in (("orient2d", orient2d(a, b, c), 2), ("incircle", incirc
                          # compare_distance(c = a, p = b, q = c)
                          ("compare_distance", dot(sub(b, a), sub(b, a)) - dot(sub(c, a), sub(c, a)), 2)):
     claim(sp.Poly(poly, *syms).total_degree() == want, f"{name} has total degree {want}")
+
+# The predicates of space (formulas.hpp, term for term): each is the determinant it names
+# (so its sign convention is Shewchuk's), of the degree adaptive3d.cpp passes to
+# expansion_safe.
+syms3 = sp.symbols("ax3 ay3 az3 bx3 by3 bz3 cx3 cy3 cz3 dx3 dy3 dz3 ex3 ey3 ez3")
+pa3, pb3, pc3, pd3, pe3 = (syms3[3 * i:3 * i + 3] for i in range(5))
+
+
+def orient3d(a, b, c, d):  # orient3d_of_differences, d as the pivot
+    adx, ady, adz = (a[i] - d[i] for i in range(3))
+    bdx, bdy, bdz = (b[i] - d[i] for i in range(3))
+    cdx, cdy, cdz = (c[i] - d[i] for i in range(3))
+    return (adz * (bdx * cdy - cdx * bdy) + bdz * (cdx * ady - adx * cdy)
+            + cdz * (adx * bdy - bdx * ady))
+
+
+def insphere(a, b, c, d, e):  # insphere_of_differences, e as the pivot
+    (aex, aey, aez), (bex, bey, bez), (cex, cey, cez), (dex, dey, dez) = (
+        [p[i] - e[i] for i in range(3)] for p in (a, b, c, d))
+    ab, bc = aex * bey - bex * aey, bex * cey - cex * bey
+    cd, da = cex * dey - dex * cey, dex * aey - aex * dey
+    ac, bd = aex * cey - cex * aey, bex * dey - dex * bey
+    abc = aez * bc - bez * ac + cez * ab
+    bcd = bez * cd - cez * bd + dez * bc
+    cda = cez * da + dez * ac + aez * cd
+    dab = dez * ab + aez * bd + bez * da
+    alift, blift = aex**2 + aey**2 + aez**2, bex**2 + bey**2 + bez**2
+    clift, dlift = cex**2 + cey**2 + cez**2, dex**2 + dey**2 + dez**2
+    return (dlift * abc - clift * dab) + (blift * cda - alift * bcd)
+
+
+def laplace(rows):  # cofactor expansion along the first row (fast on symbolic entries)
+    if len(rows) == 1:
+        return rows[0][0]
+    return sum((-1) ** j * rows[0][j] * laplace([r[:j] + r[j + 1:] for r in rows[1:]])
+               for j in range(len(rows)))
+
+
+o3 = sp.expand(orient3d(pa3, pb3, pc3, pd3))
+o3_rows = [[p[i] - pd3[i] for i in range(3)] for p in (pa3, pb3, pc3)]
+claim(o3 == sp.expand(laplace(o3_rows)), "orient3d == det[a - d; b - d; c - d]")
+i5 = sp.expand(insphere(pa3, pb3, pc3, pd3, pe3))
+i5_rows = ([p[i] - pe3[i] for i in range(3)] for p in (pa3, pb3, pc3, pd3))
+claim(i5 == sp.expand(laplace([[*r, sum(x**2 for x in r)] for r in i5_rows])),
+      "insphere == det[p - e, |p - e|^2] over p = a, b, c, d")
+for name, poly, want in (("orient3d", o3, 3), ("insphere", i5, 5)):
+    claim(sp.Poly(poly, *syms3).total_degree() == want, f"{name} has total degree {want}")
 
 # ---- 3. boundary cases ---------------------------------------------------------------------
 t = sp.symbols("t0:4")

@@ -12,6 +12,8 @@
 //                                            must not depend on the consumer's flags
 #include <cstdio>
 #include <cstring>
+#include <utility>
+#include <vector>
 
 #include "evaluate.hpp"
 #include "fp_environment.hpp"
@@ -37,7 +39,8 @@ int check_adaptive(const std::vector<QueryFamily>& families) {
         const std::size_t bad = count_mismatches("adaptive", family, adaptive, exact) +
                                 count_mismatches("batch", family, evaluate_batch(family), exact);
         total_bad += bad;
-        const std::size_t queries = family.orient2d.size() + 2 * family.incircle.size();
+        const std::size_t queries = family.orient2d.size() + 2 * family.incircle.size() +
+                                    family.orient3d.size() + family.insphere.size();
         // The plain kernel is expected to be wrong here: the count is information, and
         // shows that the queries are hard. It is not printed query by query.
         std::size_t plain_wrong = 0;
@@ -46,6 +49,8 @@ int check_adaptive(const std::vector<QueryFamily>& families) {
             plain_wrong += plain.incircle[i] != exact.incircle[i];
             plain_wrong += plain.incircle_cosine[i] != exact.incircle_cosine[i];
         }
+        for (std::size_t i = 0; i < exact.orient3d.size(); ++i) plain_wrong += plain.orient3d[i] != exact.orient3d[i];
+        for (std::size_t i = 0; i < exact.insphere.size(); ++i) plain_wrong += plain.insphere[i] != exact.insphere[i];
         std::printf("%-10s %7zu queries: adaptive and batch wrong %zu, double wrong %zu\n",
                     family.name.c_str(), queries, bad, plain_wrong);
     }
@@ -61,14 +66,14 @@ int print_double_signs(const std::vector<QueryFamily>& families) {
         if (!family.normal_range) continue;
         const Signs d = evaluate(DoubleKernel{}, family);
         const Signs ld = evaluate(LongDoubleKernel{}, family);
-        std::printf("%s double %016llx %016llx %016llx\n", family.name.c_str(),
-                    static_cast<unsigned long long>(fingerprint(d.orient2d)),
-                    static_cast<unsigned long long>(fingerprint(d.incircle)),
-                    static_cast<unsigned long long>(fingerprint(d.incircle_cosine)));
-        std::printf("%s long-double %016llx %016llx %016llx\n", family.name.c_str(),
-                    static_cast<unsigned long long>(fingerprint(ld.orient2d)),
-                    static_cast<unsigned long long>(fingerprint(ld.incircle)),
-                    static_cast<unsigned long long>(fingerprint(ld.incircle_cosine)));
+        for (const auto& [name, s] : {std::pair{"double", &d}, std::pair{"long-double", &ld}}) {
+            std::printf("%s %s", family.name.c_str(), name);
+            for (const std::vector<Sign>* signs : {&s->orient2d, &s->incircle, &s->incircle_cosine,
+                                                   &s->orient3d, &s->insphere}) {
+                std::printf(" %016llx", static_cast<unsigned long long>(fingerprint(*signs)));
+            }
+            std::printf("\n");
+        }
     }
     return 0;
 }

@@ -15,6 +15,8 @@ struct Signs {
     std::vector<Sign> orient2d;
     std::vector<Sign> incircle;
     std::vector<Sign> incircle_cosine;
+    std::vector<Sign> orient3d;  // empty for the batched predicates, which are planar only
+    std::vector<Sign> insphere;
 };
 
 template <class Kernel>
@@ -27,6 +29,10 @@ Signs evaluate(const Kernel& kernel, const QueryFamily& family) {
     for (const IncircleQuery& q : family.incircle) {
         s.incircle.push_back(kernel.incircle(q.a, q.b, q.c, q.d));
         s.incircle_cosine.push_back(kernel.incircle_cosine(q.a, q.b, q.c, q.d));
+    }
+    for (const Orient3dQuery& q : family.orient3d) s.orient3d.push_back(kernel.orient3d(q.a, q.b, q.c, q.d));
+    for (const InsphereQuery& q : family.insphere) {
+        s.insphere.push_back(kernel.insphere(q.a, q.b, q.c, q.d, q.e));
     }
     return s;
 }
@@ -50,6 +56,7 @@ inline Signs evaluate_batch(const QueryFamily& family) {
 }
 
 inline void print_point(Point2 p) { std::printf("(%a, %a)", p.x, p.y); }
+inline void print_point(Point3 p) { std::printf("(%a, %a, %a)", p.x, p.y, p.z); }
 
 /// Counts the queries where `got` differs from `want`, printing the first few with their
 /// exact coordinates (hex floats) so that a failure can become a named regression test.
@@ -79,6 +86,19 @@ inline std::size_t count_mismatches(const char* label, const QueryFamily& family
         report("incircle", i, got.incircle[i], want.incircle[i], print_query);
         report("incircle_cosine", i, got.incircle_cosine[i], want.incircle_cosine[i],
                print_query);
+    }
+    // The 3D signs, unless `got` has none (the batched predicates are planar only).
+    for (std::size_t i = 0; i < got.orient3d.size(); ++i) {
+        const Orient3dQuery& q = family.orient3d[i];
+        report("orient3d", i, got.orient3d[i], want.orient3d[i], [&] {
+            print_point(q.a), print_point(q.b), print_point(q.c), print_point(q.d);
+        });
+    }
+    for (std::size_t i = 0; i < got.insphere.size(); ++i) {
+        const InsphereQuery& q = family.insphere[i];
+        report("insphere", i, got.insphere[i], want.insphere[i], [&] {
+            print_point(q.a), print_point(q.b), print_point(q.c), print_point(q.d), print_point(q.e);
+        });
     }
     return bad;
 }

@@ -77,7 +77,7 @@ int run(const Kernel& kernel) {
 
     // The named fixtures first: the reference itself is checked against the recorded
     // signs, then every environment against them.
-    QueryFamily fixture_family{"fixtures", false, {}, {}};
+    QueryFamily fixture_family{"fixtures", false, {}, {}, {}, {}};
     Signs fixture_signs;
     for (const Fixture& f : fixtures) {
         fixture_family.orient2d.push_back(f.orient2d);

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace exidel::hygiene {
 
@@ -65,6 +66,50 @@ void add_cocircular(QueryFamily& family, const Placement& where, int ulp_radius)
     }
 }
 
+// The integer points of the sphere x^2 + y^2 + z^2 = 65^2 with no zero coordinate (as
+// for the circle: an ulp step from 0 would be a subnormal), in a fixed order.
+std::vector<Point3> sphere65() {
+    std::vector<Point3> points;
+    for (int x = -64; x <= 64; ++x) {
+        for (int y = -64; y <= 64; ++y) {
+            const int zz = 65 * 65 - x * x - y * y;
+            if (x == 0 || y == 0 || zz <= 0) continue;
+            const int z = static_cast<int>(std::lround(std::sqrt(zz)));
+            if (z * z == zz) points.push_back({double(x), double(y), double(z)});
+        }
+    }
+    return points;
+}
+
+Point3 place(Point3 p, const Placement& where) {
+    return {std::ldexp(p.x + where.offset.x, where.exponent),
+            std::ldexp(p.y + where.offset.y, where.exponent),
+            std::ldexp(p.z + where.offset.x + where.offset.y, where.exponent)};
+}
+
+// Quintuples of the sphere (every fifth point apart, so the choices spread over it) with
+// e moved over the ulp grid (in x and z); quadruples of the plane through a, b, c with
+// d = b + c - a (integers: exactly coplanar before placement), moved alike.
+void add_cospherical(QueryFamily& family, const Placement& where, int ulp_radius) {
+    static const std::vector<Point3> sphere = sphere65();
+    const std::size_t n = sphere.size();
+    for (std::size_t i = 0; i < n; i += 7) {
+        const Point3 p[5] = {sphere[i], sphere[(i + n / 5) % n], sphere[(i + 2 * n / 5) % n],
+                             sphere[(i + 3 * n / 5) % n], sphere[(i + 4 * n / 5) % n]};
+        const Point3 a = place(p[0], where), b = place(p[1], where), c = place(p[2], where),
+                     d = place(p[3], where), e0 = place(p[4], where);
+        const Point3 d0 = place({p[1].x + p[2].x - p[0].x, p[1].y + p[2].y - p[0].y,
+                                 p[1].z + p[2].z - p[0].z},
+                                where);
+        for (int dx = -ulp_radius; dx <= ulp_radius; ++dx) {
+            for (int dz = -ulp_radius; dz <= ulp_radius; ++dz) {
+                family.insphere.push_back({a, b, c, d, {ulps(e0.x, dx), e0.y, ulps(e0.z, dz)}});
+                family.orient3d.push_back({a, b, c, {ulps(d0.x, dx), d0.y, ulps(d0.z, dz)}});
+            }
+        }
+    }
+}
+
 // p walks over the grid; (p, q, r), (q, r, p) and (r, p, q) are the same orientation
 // exactly, but the pivot changes where the naive formula fails.
 void add_collinear_grid(QueryFamily& family, Point2 p, Point2 q, Point2 r, int grid_size,
@@ -84,7 +129,7 @@ void add_collinear_grid(QueryFamily& family, Point2 p, Point2 q, Point2 r, int g
 }  // namespace
 
 QueryFamily kettner_family(int grid_size) {
-    QueryFamily family{"kettner", true, {}, {}};
+    QueryFamily family{"kettner", true, {}, {}, {}, {}};
     // A thinner grid keeps the same span of 256 ulps.
     const int stride = 256 / grid_size;
     add_collinear_grid(family, {0.5, 0.5}, {12, 12}, {24, 24}, grid_size, stride);
@@ -97,13 +142,14 @@ QueryFamily kettner_family(int grid_size) {
 }
 
 QueryFamily cocircular_family(int ulp_radius) {
-    QueryFamily family{"cocircular", true, {}, {}};
+    QueryFamily family{"cocircular", true, {}, {}, {}, {}};
     // Exponents keep every product of the degree-8 cosine form well inside the normal
     // range (65 * 2^100 to the 8th is about 2^850).
     for (int exponent : {-100, 0, 100}) {
         for (Point2 offset : {Point2{0, 0}, Point2{1000, -3000}, Point2{0.1, 0.3},
                               Point2{1e6 + 0.7, 3e5 + 0.1}}) {
             add_cocircular(family, {exponent, offset}, ulp_radius);
+            add_cospherical(family, {exponent, offset}, ulp_radius);
         }
     }
     return family;
@@ -112,22 +158,28 @@ QueryFamily cocircular_family(int ulp_radius) {
 QueryFamily huge_family(int ulp_radius) {
     // 65 * 2^950 is about 2^956: differences are fine, their squares overflow, and the
     // translated copies sit near the largest double.
-    QueryFamily family{"huge", true, {}, {}};
+    QueryFamily family{"huge", true, {}, {}, {}, {}};
     for (Point2 offset : {Point2{0, 0}, Point2{1000, -3000}, Point2{0.1, 0.3}}) {
         add_cocircular(family, {950, offset}, ulp_radius);
+        add_cospherical(family, {950, offset}, ulp_radius);
     }
     add_cocircular(family, {1010, {0, 0}}, ulp_radius);  // coordinates up to ~2^1016
+    add_cospherical(family, {1010, {0, 0}}, ulp_radius);
     return family;
 }
 
 QueryFamily underflow_family(int ulp_radius) {
-    QueryFamily family{"underflow", false, {}, {}};
+    QueryFamily family{"underflow", false, {}, {}, {}, {}};
     // Subnormal coordinates: integers times 2^-1074 (the smallest subnormal) are exact.
     add_cocircular(family, {-1074, {0, 0}}, ulp_radius);
     add_cocircular(family, {-1074, {1000, -3000}}, ulp_radius);
+    add_cospherical(family, {-1074, {0, 0}}, ulp_radius);
+    add_cospherical(family, {-1074, {1000, -3000}}, ulp_radius);
     // Normal coordinates whose squares (2^-1200) and products underflow.
     add_cocircular(family, {-600, {0, 0}}, ulp_radius);
     add_cocircular(family, {-600, {0.1, 0.3}}, ulp_radius);
+    add_cospherical(family, {-600, {0, 0}}, ulp_radius);
+    add_cospherical(family, {-600, {0.1, 0.3}}, ulp_radius);
     // Kettner's first configuration shrunk into the subnormals: (1,1), (24,24), (48,48)
     // units of 2^-1074, moved by single subnormal steps.
     const double unit = std::numeric_limits<double>::denorm_min();

@@ -19,6 +19,14 @@ struct IncircleQuery {
     Point2 a, b, c, d;
 };
 
+struct Orient3dQuery {
+    Point3 a, b, c, d;
+};
+
+struct InsphereQuery {
+    Point3 a, b, c, d, e;
+};
+
 struct QueryFamily {
     std::string name;
     /// True when the plain double formulas never meet a subnormal input or intermediate on
@@ -26,6 +34,8 @@ struct QueryFamily {
     bool normal_range;
     std::vector<Orient2dQuery> orient2d;
     std::vector<IncircleQuery> incircle;  // decided with incircle and incircle_cosine
+    std::vector<Orient3dQuery> orient3d;
+    std::vector<InsphereQuery> insphere;
 };
 
 /// Kettner et al.'s three near-collinear configurations (docs/background.md section 4), with p moved over a
@@ -34,7 +44,8 @@ QueryFamily kettner_family(int grid_size);
 
 /// Four points of an integer circle (radius 65) for many quadruples, scaled by powers of
 /// two and translated (exactly or with one rounding), with d moved by -r..r ulps per
-/// coordinate.
+/// coordinate; in space, five points of the integer sphere of radius 65 (insphere) and
+/// four of a plane through three of them (orient3d), placed alike, the last point moved.
 QueryFamily cocircular_family(int ulp_radius);
 
 /// The same shapes near the top of the double range: the formulas' products overflow.

@@ -1,5 +1,6 @@
-// exidel tests: the oracles. CGAL's exact predicates for orient2d and incircle, and an
-// independent exact evaluation of the cosine expression (CGAL has no such predicate).
+// exidel tests: the oracles. CGAL's exact predicates for orient2d, incircle, orient3d and
+// insphere, and an independent exact evaluation of the cosine expression (CGAL has no
+// such predicate).
 #pragma once
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -27,6 +28,23 @@ inline Sign cgal_orient2d(Point2 a, Point2 b, Point2 c) {
 /// collinear abc it is still the sign of the same determinant.
 inline Sign cgal_incircle(Point2 a, Point2 b, Point2 c, Point2 d) {
     return to_sign(CGAL::side_of_oriented_circle(to_cgal(a), to_cgal(b), to_cgal(c), to_cgal(d)));
+}
+
+inline Epick::Point_3 to_cgal(Point3 p) { return {p.x, p.y, p.z}; }
+
+/// orient3d from CGAL::orientation with Epick (exact). CGAL's orientation(a, b, c, d) is
+/// the sign of det(b - a, c - a, d - a) = -det(a - d, b - d, c - d): the opposite of
+/// Shewchuk's convention, which exidel follows (kernel.hpp).
+inline Sign cgal_orient3d(Point3 a, Point3 b, Point3 c, Point3 d) {
+    return -to_sign(CGAL::orientation(to_cgal(a), to_cgal(b), to_cgal(c), to_cgal(d)));
+}
+
+/// insphere from CGAL::side_of_oriented_sphere with Epick (exact): CGAL's is positive
+/// when e is inside and orientation(a, b, c, d) is positive, i.e. when Shewchuk's orient3d
+/// is negative, so it is the opposite of exidel's insphere.
+inline Sign cgal_insphere(Point3 a, Point3 b, Point3 c, Point3 d, Point3 e) {
+    return -to_sign(CGAL::side_of_oriented_sphere(to_cgal(a), to_cgal(b), to_cgal(c), to_cgal(d),
+                                                  to_cgal(e)));
 }
 
 /// True when c and d are strictly on opposite sides of line ab, decided by CGAL.

@@ -41,8 +41,18 @@ struct MpfrAtBound {
         return MpfrKernel(testing::orient2d_bits(testing::grid_bits(pts)))
             .compare_distance(c, p, q);
     }
+    // The predicates of space: 3b+6 and 5b+12 bits (proofs/bitcounts.md).
+    static Sign orient3d(Point3 a, Point3 b, Point3 c, Point3 d) {
+        const std::array q{a, b, c, d};
+        return MpfrKernel(testing::orient3d_bits(testing::grid_bits(q))).orient3d(a, b, c, d);
+    }
+    static Sign insphere(Point3 a, Point3 b, Point3 c, Point3 d, Point3 e) {
+        const std::array q{a, b, c, d, e};
+        return MpfrKernel(testing::insphere_bits(testing::grid_bits(q)))
+            .insphere(a, b, c, d, e);
+    }
 };
-static_assert(PredicateKernel<MpfrAtBound>);
+static_assert(PredicateKernel3D<MpfrAtBound>);
 
 using ExactKernels = ::testing::Types<GmpExactKernel, CppIntExactKernel, MpfrAtBound, AdaptiveKernel>;
 

@@ -21,12 +21,15 @@ namespace exidel {
 
 /// Which stage of the adaptive kernel decided a call (for the `stages` study):
 ///   filter   the floating-point filter (stage A);
-///   small_integer  incircle and incircle_cosine: every difference exact and all within 30
-///            bits of each other; exact 64/128/256-bit integer arithmetic (exact ties on
-///            lattices end here);
+///   small_integer  two equal points, or every difference exact and all within a window of
+///            30 bits (24 for insphere, 62 for orient2d's and compare_distance's, and
+///            incircle's second try) of each other; exact 64/128/256-bit integer
+///            arithmetic (exact ties on lattices end here);
 ///   double_word  incircle and incircle_cosine: the value from the exact differences in
 ///            double-word arithmetic, with a proven bound (proofs/bounds.md#incircle-double-
 ///            word, #cosine-double-word);
+///            orient3d and insphere: from the exact differences in double-word arithmetic
+///            too (proofs/bounds.md#orient3d-double-word, #insphere-double-word);
 ///   stage_b  the exact value of the rounded differences (Shewchuk's stage B); for
 ///            incircle_cosine, the exact signs of the two dot products; for
 ///            compare_distance, only when the differences were exact (exact ties on
@@ -53,9 +56,12 @@ struct AdaptiveKernel {
     static Sign incircle(Point2 a, Point2 b, Point2 c, Point2 d);
     static Sign incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d);
     static Sign compare_distance(Point2 c, Point2 p, Point2 q);
+    static Sign orient3d(Point3 a, Point3 b, Point3 c, Point3 d);
+    static Sign insphere(Point3 a, Point3 b, Point3 c, Point3 d, Point3 e);
 };
 
 static_assert(PredicateKernel<AdaptiveKernel>);
+static_assert(PredicateKernel3D<AdaptiveKernel>);
 
 /// Research instrument: the same predicates, also reporting which stage decided.
 Sign orient2d_staged(Point2 a, Point2 b, Point2 c, AdaptiveStage& stage);
@@ -63,5 +69,7 @@ Sign incircle_staged(Point2 a, Point2 b, Point2 c, Point2 d, AdaptiveStage& stag
 Sign incircle_cosine_staged(Point2 a, Point2 b, Point2 c, Point2 d,
                             AdaptiveStage& stage);
 Sign compare_distance_staged(Point2 c, Point2 p, Point2 q, AdaptiveStage& stage);
+Sign orient3d_staged(Point3 a, Point3 b, Point3 c, Point3 d, AdaptiveStage& stage);
+Sign insphere_staged(Point3 a, Point3 b, Point3 c, Point3 d, Point3 e, AdaptiveStage& stage);
 
 }  // namespace exidel

@@ -127,6 +127,66 @@ inline constexpr double cos_dw = 96.0 * epsilon * epsilon;
 inline constexpr double cos_dw_min = 0x1p-110;
 inline constexpr double cos_dw_max = 0x1p110;
 
+// ---- orient3d -------------------------------------------------------------------------
+// The filter evaluates Shewchuk's expansion along z of det(a - d, b - d, c - d) from the
+// rounded differences (formulas.hpp, orient3d_of_differences, operation for operation) and
+// its permanent T = |adz| (|bdx cdy| + |cdx bdy|) + |bdz| (...) + |cdz| (...). Each of its
+// six monomials meets at most eight roundings (three differences, the product, the minor,
+// the product by z, two sums), the last of which cannot change the sign: seven count.
+// Shewchuk (1997), Section 4.4, publishes (7 + 56 eps) eps; proofs/bounds.md#orient3d
+// proves (7 + 62 eps + O(eps^2)) eps, and 64 is the first double above it.
+/// Stage A: if |D| > fl(fl(o3d_a * T) + fl(underflow_orient3d * S)), D has the exact sign
+/// (S = |adz| + |bdz| + |cdz| + 1; the second term is skipped where it cannot change the
+/// sum, adaptive3d.cpp).
+inline constexpr double o3d_a = (7.0 + 64.0 * epsilon) * epsilon;
+/// What gradual underflow can add: six minor products, each scaled by one |z|, three
+/// products by z, the rounding of the bound (proofs/bounds.md#underflow-3d).
+inline constexpr double underflow_orient3d = 0x1p-1068;
+
+// ---- orient3d, double-word stage --------------------------------------------------------
+// After stage A: det(a - d, b - d, c - d) from the exact differences (Two-Sum) in
+// double-word arithmetic (adaptive3d.cpp), in the filter's order, against the permanent t
+// computed from the high parts: |det.hi| > fl(o3d_dw * t) certifies the sign
+// (proofs/bounds.md#orient3d-double-word, the rules of #incircle-double-word). Used only
+// when every nonzero |difference| is in [o3d_dw_min, o3d_dw_max].
+inline constexpr double o3d_dw = 32.0 * epsilon * epsilon;
+inline constexpr double o3d_dw_min = 0x1p-220;
+inline constexpr double o3d_dw_max = 0x1p220;
+
+// ---- insphere ---------------------------------------------------------------------------
+// Shewchuk's insphere with e as the pivot (formulas.hpp, insphere_of_differences) and its
+// permanent. Each monomial lift x z x minor product meets at most sixteen roundings (five
+// differences, three for the lift, five for the 3 x 3 orientation, the product by the lift,
+// two sums), the last free: fifteen count. Shewchuk (1997), Section 4.4, publishes
+// (16 + 224 eps) eps; proofs/bounds.md#insphere proves (15 + 262 eps + O(eps^2)) eps.
+inline constexpr double isp_a = (16.0 + 320.0 * epsilon) * epsilon;
+/// What gradual underflow can add, relative to S = L Z + L + C + 1 with L the sum of the
+/// lifts, Z of the |z| differences and C of the four |3 x 3 orientations|
+/// (proofs/bounds.md#underflow-3d).
+inline constexpr double underflow_insphere = 0x1p-1066;
+
+// ---- insphere, semi-static filter --------------------------------------------------------
+// Tried before stage A, as incircle's: with M the largest |rounded difference|, each of
+// the determinant's 72 degree-5 monomials is at most M^5, so one bound isp_static * M^5
+// covers the rounding of the differences (72 ((1-eps)^-5 - 1) M^5, 360 eps M^5 to first
+// order) and of the evaluation (at most ten roundings on each monomial's path besides the
+// last, free: 720 eps M^5), 1080 eps + O(eps^2) in all, and the bound's own four
+// roundings; proofs/bounds.md#insphere-semi-static proves 1032 eps + O(eps^2) (a tighter
+// count of the evaluation). It costs a max over twelve magnitudes where stage A's
+// permanent costs some forty operations. Used only for M in [isp_static_min,
+// isp_static_max]: above, M^5 could overflow; below, it or underflow's absolute errors
+// would not be negligible.
+inline constexpr double isp_static = 1152.0 * epsilon;
+inline constexpr double isp_static_min = 0x1p-190;
+inline constexpr double isp_static_max = 0x1p200;
+
+// ---- insphere, double-word stage --------------------------------------------------------
+// As orient3d's, for the degree-5 determinant (proofs/bounds.md#insphere-double-word); a
+// narrower range keeps degree 5 clear of overflow and its absolute terms negligible.
+inline constexpr double isp_dw = 80.0 * epsilon * epsilon;
+inline constexpr double isp_dw_min = 0x1p-160;
+inline constexpr double isp_dw_max = 0x1p160;
+
 // ---- the circumcentre construction (construct.hpp) --------------------------------------
 // Stage 2 works in double-word arithmetic (a value is an unevaluated sum hi + lo of two
 // doubles): the differences b - a, c - a exactly (Two-Diff), D = bx cy - by cx and

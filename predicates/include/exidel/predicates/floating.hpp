@@ -22,6 +22,8 @@ struct FloatingKernel {
     static Sign incircle(Point2 a, Point2 b, Point2 c, Point2 d) noexcept;
     static Sign incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d) noexcept;
     static Sign compare_distance(Point2 c, Point2 p, Point2 q) noexcept;
+    static Sign orient3d(Point3 a, Point3 b, Point3 c, Point3 d) noexcept;
+    static Sign insphere(Point3 a, Point3 b, Point3 c, Point3 d, Point3 e) noexcept;
 };
 
 extern template struct FloatingKernel<double>;
@@ -32,5 +34,7 @@ using LongDoubleKernel = FloatingKernel<long double>;
 
 static_assert(PredicateKernel<DoubleKernel>);
 static_assert(PredicateKernel<LongDoubleKernel>);
+static_assert(PredicateKernel3D<DoubleKernel>);
+static_assert(PredicateKernel3D<LongDoubleKernel>);
 
 }  // namespace exidel

@@ -50,4 +50,33 @@ concept PredicateKernel = requires(const K& k, Point2 p) {
     { K::is_exact } -> std::convertible_to<bool>;
 };
 
+/// A kernel that also decides the two predicates of space, on points with finite double
+/// coordinates (every shipped kernel does; a user's kernel may not, and the library asks
+/// with this concept, or with `has_3d_predicates<K>`):
+///
+///   orient3d(a, b, c, d)         Shewchuk's convention: the sign of det(a - d, b - d, c - d),
+///                                positive iff d lies below the plane through a, b, c, where
+///                                "below" means on the side from which a, b, c appear
+///                                clockwise (a, b, c counter-clockwise seen from above);
+///                                zero iff the four points are coplanar. It is the opposite
+///                                of CGAL's orientation(a, b, c, d).
+///   insphere(a, b, c, d, e)      positive iff e lies strictly inside the sphere through
+///                                a, b, c, d when orient3d(a, b, c, d) is positive; the sign
+///                                flips with orient3d(a, b, c, d), and is zero when the five
+///                                points are cospherical (or a, b, c, d coplanar and e on
+///                                their circle or plane, as the determinant says). It is
+///                                the opposite of CGAL's side_of_oriented_sphere.
+///
+/// Both are the signs of determinants (proofs/bounds.md#orient3d, #insphere), so swapping
+/// two arguments flips the sign and translating every point by the same vector, or
+/// scaling every coordinate by the same power of two, changes nothing (for exact kernels).
+template <class K>
+concept PredicateKernel3D = PredicateKernel<K> && requires(const K& k, Point3 p) {
+    { k.orient3d(p, p, p, p) } -> std::same_as<Sign>;
+    { k.insphere(p, p, p, p, p) } -> std::same_as<Sign>;
+};
+
+template <class K>
+inline constexpr bool has_3d_predicates = PredicateKernel3D<K>;
+
 }  // namespace exidel

@@ -4,8 +4,8 @@
 // as FloatingKernel, each rounded to nearest at `bits` bits of significand. Inputs are
 // doubles, so every coordinate is exact at bits >= 53. For bits at or above the counts in
 // proofs/bitcounts.md (2b+3 for orient2d and compare_distance, 4b+8 for incircle, 8b+12 for
-// incircle_cosine, b = 53 + the exponent spread of the query) every result equals the exact
-// kernel's.
+// incircle_cosine, 3b+6 for orient3d, 5b+12 for insphere, b = 53 + the exponent spread of
+// the query) every result equals the exact kernel's.
 #pragma once
 
 #include <string>
@@ -32,11 +32,14 @@ public:
     Sign incircle(Point2 a, Point2 b, Point2 c, Point2 d) const;
     Sign incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d) const;
     Sign compare_distance(Point2 c, Point2 p, Point2 q) const;
+    Sign orient3d(Point3 a, Point3 b, Point3 c, Point3 d) const;
+    Sign insphere(Point3 a, Point3 b, Point3 c, Point3 d, Point3 e) const;
 
 private:
     unsigned bits_;
 };
 
 static_assert(PredicateKernel<MpfrKernel>);
+static_assert(PredicateKernel3D<MpfrKernel>);
 
 }  // namespace exidel

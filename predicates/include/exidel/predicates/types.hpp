@@ -1,4 +1,4 @@
-// exidel: the value types every kernel speaks: a point of two doubles and a sign.
+// exidel: the value types every kernel speaks: points of two or three doubles and a sign.
 #pragma once
 
 #include <cstdint>
@@ -10,6 +10,15 @@ struct Point2 {
     double x;
     double y;
     friend constexpr bool operator==(const Point2&, const Point2&) = default;
+};
+
+/// A point of space, for the 3D predicates (orient3d, insphere). Predicates require every
+/// coordinate to be finite.
+struct Point3 {
+    double x;
+    double y;
+    double z;
+    friend constexpr bool operator==(const Point3&, const Point3&) = default;
 };
 
 /// The result of every predicate. Never a raw determinant: callers must not compare a

@@ -3,6 +3,7 @@
 
 #include "exidel/testing/families.hpp"
 #include "exidel/testing/generators.hpp"
+#include "exidel/testing/generators3d.hpp"
 #include "exidel/testing/lattice.hpp"
 #include "exidel/testing/show.hpp"
 #include "exidel/testing/ulp.hpp"

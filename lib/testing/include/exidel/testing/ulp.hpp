@@ -47,10 +47,13 @@ inline int low_exponent(double v) {
 /// b of proofs/bitcounts.md: the number of bits of the largest coordinate of `points` once all
 /// coordinates are written as integers on the common grid 2^min(q), i.e. 53 + the
 /// spread of the low exponents. 0 when every coordinate is zero.
-inline int grid_bits(std::span<const Point2> points) {
+template <class P>
+int grid_bits_of(std::span<const P> points) {
     int lo = INT_MAX, hi = INT_MIN;
-    for (const Point2& p : points) {
-        for (double v : {p.x, p.y}) {
+    for (const P& p : points) {
+        double coordinates[3] = {p.x, p.y, 0};
+        if constexpr (requires { p.z; }) coordinates[2] = p.z;
+        for (double v : coordinates) {
             if (v == 0) continue;
             const int q = low_exponent(v);
             lo = q < lo ? q : lo;
@@ -59,6 +62,8 @@ inline int grid_bits(std::span<const Point2> points) {
     }
     return lo == INT_MAX ? 0 : std::numeric_limits<double>::digits + (hi - lo);
 }
+inline int grid_bits(std::span<const Point2> points) { return grid_bits_of(points); }
+inline int grid_bits(std::span<const Point3> points) { return grid_bits_of(points); }
 
 /// Significand bits with which the textbook formulas (predicates/src/formulas.hpp) are
 /// exact for a query of grid width b: differences take b+1 bits, each product doubles and
@@ -70,6 +75,9 @@ constexpr unsigned at_least_53(int bits) { return bits < 53 ? 53u : unsigned(bit
 constexpr unsigned orient2d_bits(int b) { return at_least_53(2 * b + 3); }
 constexpr unsigned incircle_bits(int b) { return at_least_53(4 * b + 8); }
 constexpr unsigned incircle_cosine_bits(int b) { return at_least_53(8 * b + 12); }
+/// The predicates of space (proofs/bitcounts.md): degree 3 and degree 5 with lifts.
+constexpr unsigned orient3d_bits(int b) { return at_least_53(3 * b + 6); }
+constexpr unsigned insphere_bits(int b) { return at_least_53(5 * b + 12); }
 /// The count for predicate p (compare_distance has degree 2, like orient2d).
 constexpr unsigned exact_bits(Predicate p, int b) {
     switch (p) {
