@@ -245,22 +245,15 @@ template <bool Fma>
         same_point(b, d) || same_point(c, d)) {
         return Sign::zero;
     }
-    // The small-integer stage decides exact ties, the double-word stage near-ties; either
-    // order is exact, and the order only saves time (each costs about 40 ns when it fails).
-    // Exact ties come mostly from data with few significant bits (lattices, grids, scaled
-    // integers), near-ties from full-precision data: differences whose significands all end
-    // in eight zero bits go to the integers first.
-    const std::uint64_t low_bits =
-        std::bit_cast<std::uint64_t>(v.adx) | std::bit_cast<std::uint64_t>(v.ady) |
-        std::bit_cast<std::uint64_t>(v.bdx) | std::bit_cast<std::uint64_t>(v.bdy) |
-        std::bit_cast<std::uint64_t>(v.cdx) | std::bit_cast<std::uint64_t>(v.cdy);
-    const bool tie_likely = (low_bits & 0xff) == 0;
-    if (tie_likely) {
+    // The small-integer stage decides exact ties, the double-word stage near-ties; the
+    // order only saves time (adaptive_stages.hpp, tie_likely).
+    const bool ties = detail::tie_likely({v.adx, v.ady, v.bdx, v.bdy, v.cdx, v.cdy});
+    if (ties) {
         if (Sign s; incircle_small_integers(a, b, c, d, v, s)) return s;
     }
     stage = AdaptiveStage::double_word;
     if (Sign s; incircle_double_word(a, b, c, d, s)) return s;
-    if (!tie_likely) {
+    if (!ties) {
         stage = AdaptiveStage::small_integer;
         if (Sign s; incircle_small_integers(a, b, c, d, v, s)) return s;
     }

@@ -122,16 +122,6 @@ template <bool Fma>
     return true;
 }
 
-/// Differences whose significands all end in eight zero bits come from data of low
-/// precision, where exact ties live: those try the integers before the double words
-/// (as incircle does, adaptive.cpp).
-template <int N>
-bool tie_likely(const double (&v)[N]) {
-    std::uint64_t low_bits = 0;
-    for (double x : v) low_bits |= std::bit_cast<std::uint64_t>(x);
-    return (low_bits & 0xff) == 0;
-}
-
 [[gnu::noinline]] Sign orient3d_adapt(Point3 a, Point3 b, Point3 c, Point3 d,
                                       const double (&v)[9], AdaptiveStage& stage) {
     stage = AdaptiveStage::small_integer;
@@ -139,7 +129,7 @@ bool tie_likely(const double (&v)[N]) {
         same_point(b, d) || same_point(c, d)) {
         return Sign::zero;
     }
-    const bool ties = tie_likely(v);
+    const bool ties = detail::tie_likely(v);
     if (ties) {
         if (Sign s; orient3d_small_integers(a, b, c, d, v, s)) return s;
     }
@@ -327,7 +317,7 @@ template <bool Fma>
             if (same_point(p[i], p[j])) return Sign::zero;
         }
     }
-    const bool ties = tie_likely(v);
+    const bool ties = detail::tie_likely(v);
     if (ties) {
         if (Sign s; insphere_small_integers(a, b, c, d, e, v, s)) return s;
     }

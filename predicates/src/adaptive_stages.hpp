@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <climits>
 #include <cmath>
 #include <cstdint>
@@ -60,6 +61,17 @@ bool exact_small_differences(const double (&minuend)[N], const double (&subtrahe
                              const double (&difference)[N], std::int64_t (&out)[N]) {
     return exact_differences(minuend, subtrahend, difference) &&
            to_small_integers<Bits>(difference, out);
+}
+
+/// Which of the small-integer and double-word stages to try first (either order is exact;
+/// each costs about 40 ns when it fails). Differences whose significands all end in eight
+/// zero bits come from data of low precision (lattices, grids, scaled integers), where
+/// exact ties live: those try the integers first, full-precision data the double words.
+template <int N>
+bool tie_likely(const double (&differences)[N]) {
+    std::uint64_t low_bits = 0;
+    for (double x : differences) low_bits |= std::bit_cast<std::uint64_t>(x);
+    return (low_bits & 0xff) == 0;
 }
 
 // ---- the double-word stages --------------------------------------------------------------
