@@ -36,14 +36,13 @@ ParsedLine parse_query_line(std::string_view line) {
         out.error = std::move(message);
         return out;
     };
-    if (tokens[0] == "orient3d" || tokens[0] == "insphere") {
-        const bool orient = tokens[0] == "orient3d";
-        const std::size_t expected = orient ? 12 : 15;
+    if (const std::optional<SpacePredicate> space = space_predicate_from_name(tokens[0])) {
+        const std::size_t expected = 3 * point_count(*space);
         if (tokens.size() - 1 != expected) {
             return fail(std::string(tokens[0]) + " takes " + std::to_string(expected) +
                         " coordinates, got " + std::to_string(tokens.size() - 1));
         }
-        out.query.space = orient ? SpacePredicate::orient3d : SpacePredicate::insphere;
+        out.query.space = *space;
         for (std::size_t i = 0; i < expected; ++i) {
             ParsedNumber n = parse_double(tokens[i + 1]);
             if (!n.value) return fail("coordinate " + std::to_string(i + 1) + ": " + n.error);

@@ -25,10 +25,6 @@
 
 namespace exidel::cli {
 
-/// The predicates of space (kernel.hpp, PredicateKernel3D). They are not in
-/// EXIDEL_PREDICATES, whose entries take points of the plane.
-enum class SpacePredicate { orient3d, insphere };
-
 struct Query {
     Predicate predicate = Predicate::orient2d;
     std::array<Point2, 4> points{};  // only the first point_count(predicate) are used
@@ -54,9 +50,7 @@ ParsedLine parse_query_line(std::string_view line);
 template <PredicateKernel3D K>
 Sign evaluate(const K& k, const Query& q) {
     if (q.space) {
-        const auto& [a, b, c, d, e] = q.points3;
-        return *q.space == SpacePredicate::orient3d ? k.orient3d(a, b, c, d)
-                                                    : k.insphere(a, b, c, d, e);
+        return exidel::evaluate(k, *q.space, q.points3);
     }
     return exidel::evaluate(k, q.predicate, q.points);
 }

@@ -1,5 +1,7 @@
 // exidel CLI: `exidel study`, the research instruments of lib/research. Thin: parse the
 // options, call one study, print its table and where the report is.
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -52,17 +54,20 @@ Common options:
 
 failure-map:
   --preset LIST   comma-separated preset names, or 'all' (default: all presets;
-                  --quick: kettner1-3, incircle-s2, cosine-s2); --list-presets
+                  --quick: kettner1-3, incircle-s2, cosine-s2, orient3d-tilted,
+                  insphere-s2); --list-presets
   --kernel LIST   comma-separated kernel names (listed at the end)
                   (default: double,long-double,mpfr:106,adaptive,exact)
   --width W, --height H   window in cells (default 256 x 256)
   a custom configuration instead of presets:
-  --predicate P   orient2d|incircle|incircle_cosine
-  --points "x,y;x,y;x,y[;x,y]"   decimal or hex floats
+  --predicate P   orient2d|incircle|incircle_cosine|orient3d|insphere
+  --points "x,y;x,y;x,y[;x,y]"   decimal or hex floats (x,y,z triples in space)
   --move I        index of the point that moves (default 0)
+  --axes AB       space maps: the moving point's coordinates on the map's x and y
+                  axes, two of x, y, z (default xy)
   --order LIST    argument order, e.g. 1,2,0 evaluates orient2d(q, r, p): the
                   floating formulas subtract their first argument (orient2d) or the
-                  fourth (incircle) (default: 0,1,2[,3])
+                  last (the others) (default: 0,1,2[,3[,4]])
   --step S        ulps per cell (default 1);  --centered  window around the point
 
 precision:
@@ -131,18 +136,36 @@ std::vector<std::size_t> parse_list(std::string_view text, std::string_view what
     return out;
 }
 
-std::vector<Point2> parse_points(std::string_view text) {
-    std::vector<Point2> out;
+/// "x,y;x,y;..." (dimension 2) or "x,y,z;x,y,z;..." (dimension 3) as coordinate tuples.
+std::vector<std::vector<double>> parse_points(std::string_view text, std::size_t dimension) {
+    std::vector<std::vector<double>> out;
     for (const std::string& p : split(text, ';')) {
-        const std::vector<std::string> xy = split(p, ',');
-        if (xy.size() != 2) throw std::invalid_argument("--points: expected x,y pairs separated by ';'");
-        const io::ParsedNumber x = io::parse_double(xy[0]), y = io::parse_double(xy[1]);
-        if (!x.value || !y.value) {
-            throw std::invalid_argument("--points: " + (x.value ? y.error : x.error));
+        const std::vector<std::string> coordinates = split(p, ',');
+        if (coordinates.size() != dimension) {
+            throw std::invalid_argument(dimension == 2 ? "--points: expected x,y pairs separated by ';'"
+                                                       : "--points: expected x,y,z triples separated by ';'");
         }
-        out.push_back({*x.value, *y.value});
+        std::vector<double>& point = out.emplace_back();
+        for (const std::string& c : coordinates) {
+            const io::ParsedNumber v = io::parse_double(c);
+            if (!v.value) throw std::invalid_argument("--points: " + v.error);
+            point.push_back(*v.value);
+        }
     }
     return out;
+}
+
+/// The predicates a failure map can draw.
+constexpr std::string_view map_predicates[] = {"orient2d", "incircle", "incircle_cosine", "orient3d", "insphere"};
+
+/// "xy", "xz", "zy", ...: two different coordinate axes.
+std::array<int, 2> parse_axes(std::string_view text) {
+    const auto axis = [](char c) { return c == 'x' ? 0 : c == 'y' ? 1 : c == 'z' ? 2 : -1; };
+    if (text.size() != 2 || axis(text[0]) < 0 || axis(text[1]) < 0 || text[0] == text[1]) {
+        throw std::invalid_argument("--axes must be two different letters of x, y, z (e.g. xz), got '" +
+                                    std::string(text) + "'");
+    }
+    return {axis(text[0]), axis(text[1])};
 }
 
 delaunay::InCirclePolicy parse_policy(std::string_view s) {
@@ -156,7 +179,7 @@ struct Parsed {
     std::string study;
     research::RunOptions run;
     bool out_given = false;
-    std::optional<std::string> presets, kernels, predicate, points, move, order, families, bits,
+    std::optional<std::string> presets, kernels, predicate, points, move, axes, order, families, bits,
         sizes, input, incircle, algorithms;
     std::optional<std::uint64_t> width, height, step, samples, seeds, size, shrink;
     bool centered = false, list_presets = false;
@@ -189,6 +212,7 @@ void add_options(CLI::App& app, Parsed& p) {
                                  {"--predicate", &p.predicate},
                                  {"--points", &p.points},
                                  {"--move", &p.move},
+                                 {"--axes", &p.axes},
                                  {"--order", &p.order},
                                  {"-a,--algorithm,--algorithms", &p.algorithms},
                                  {"--families,--family", &p.families},
@@ -219,16 +243,29 @@ research::FailureMapOptions failure_map_options(const Parsed& p) {
         if (!p.predicate || !p.points) throw std::invalid_argument("a custom map needs --predicate and --points");
         research::FailureMapSpec s;
         s.name = "custom";
-        s.formulation = research::formulation_from_name(*p.predicate);
-        s.points = parse_points(*p.points);
-        s.pivot = p.move ? parse_unsigned(*p.move, "--move", 3) : 0;
-        s.order.resize(s.points.size());
+        s.space = space_predicate_from_name(*p.predicate);
+        if (s.space) {
+            for (const std::vector<double>& c : parse_points(*p.points, 3)) s.points3.push_back({c[0], c[1], c[2]});
+            if (p.axes) s.axes = parse_axes(*p.axes);
+        } else {
+            if (p.axes) throw std::invalid_argument("--axes is for orient3d and insphere maps");
+            const std::string_view* known = std::find(std::begin(map_predicates), std::end(map_predicates), *p.predicate);
+            if (known == std::end(map_predicates)) {
+                throw std::invalid_argument("--predicate must be orient2d|incircle|incircle_cosine|orient3d|insphere, got '" +
+                                            *p.predicate + "'");
+            }
+            s.formulation = research::formulation_from_name(*p.predicate);
+            for (const std::vector<double>& c : parse_points(*p.points, 2)) s.points.push_back({c[0], c[1]});
+        }
+        const std::size_t last = s.arity() - 1;
+        s.pivot = p.move ? parse_unsigned(*p.move, "--move", last) : 0;
+        s.order.resize(s.arity());
         for (std::size_t i = 0; i < s.order.size(); ++i) s.order[i] = i;
-        if (p.order) s.order = parse_list(*p.order, "--order", 3);
+        if (p.order) s.order = parse_list(*p.order, "--order", last);
         if (p.step) s.step = std::int64_t(*p.step);
         s.centered = p.centered;
-        s.description = "custom " + std::string(predicate_name(s.formulation)) + " map, point " +
-                        std::to_string(s.pivot) + " moved";
+        s.description = "custom " + std::string(s.predicate()) + " map, point " + std::to_string(s.pivot) +
+                        " moved" + (s.space ? std::string(" in ") + "xyz"[s.axes[0]] + " and " + "xyz"[s.axes[1]] : "");
         research::validate(s);  // before any work: bad specs are usage errors
         o.specs.push_back(std::move(s));
     } else if (p.presets && *p.presets != "all") {
@@ -262,6 +299,7 @@ std::string rerun_command(const Parsed& p) {
     text("--predicate", p.predicate);
     text("--points", p.points);
     text("--move", p.move);
+    text("--axes", p.axes);
     text("--order", p.order);
     number("--step", p.step);
     if (p.centered) c += " --centered";
@@ -356,7 +394,7 @@ int study_command(std::span<const std::string_view> args) {
         } else if (p.study == "all") {
             // `all` runs every study with its defaults: an option of one study would be
             // silently ignored, and its report's rerun line would not show it.
-            if (p.presets || p.kernels || p.predicate || p.points || p.move || p.order || p.families ||
+            if (p.presets || p.kernels || p.predicate || p.points || p.move || p.axes || p.order || p.families ||
                 p.bits || p.sizes || p.input || p.incircle || p.algorithms || p.width || p.height ||
                 p.step || p.samples || p.seeds || p.size || p.shrink || p.centered || p.list_presets) {
                 return cli.usage_error("study all takes only --out, --seed, --jobs, --quick and "

@@ -3,6 +3,7 @@
     import numpy as np, exidel
     pts = np.random.default_rng(1).random((1000, 2))
     exidel.orient2d(pts[:-2], pts[1:-1], pts[2:])        # int8 signs, exact
+    exidel.orient3d(*np.random.default_rng(2).random((4, 9, 3)))  # in space: (n, 3) arrays
     tri = exidel.Delaunay(pts)                            # scipy.spatial.Delaunay's names
     exidel.certify(pts, tri).ok                           # True, decided exactly
     vor = exidel.Voronoi(pts)                             # correctly rounded vertices
@@ -12,12 +13,12 @@ exidel.plot (matplotlib), exidel.testing (Hypothesis strategies).
 """
 
 from ._core import (__version__, algorithms, build_info, compare_distance, incircle,
-                    incircle_cosine, kernel_spellings, orient2d)
+                    incircle_cosine, insphere, kernel_spellings, orient2d, orient3d)
 from ._delaunay import Certificate, Delaunay, TriangulationError, certify
 from ._voronoi import ClippedVoronoi, Voronoi
 from ._core import circumcenter, circumcenter_statuses
 
 __all__ = ["__version__", "algorithms", "build_info", "kernel_spellings", "orient2d",
-           "incircle", "incircle_cosine", "compare_distance", "Delaunay", "TriangulationError",
+           "incircle", "incircle_cosine", "compare_distance", "orient3d", "insphere", "Delaunay", "TriangulationError",
            "certify", "Certificate", "Voronoi", "ClippedVoronoi", "circumcenter",
            "circumcenter_statuses"]

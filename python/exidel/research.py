@@ -50,7 +50,7 @@ STUDIES = ("failure-map", "precision", "triangulation", "stages", "all")
 _FAILURE_MAP = {"preset": "--preset", "presets": "--preset", "kernel": "--kernel",
                 "kernels": "--kernel", "width": "--width", "height": "--height",
                 "predicate": "--predicate", "points": "--points", "move": "--move",
-                "order": "--order", "step": "--step", "centered": "--centered"}
+                "order": "--order", "step": "--step", "centered": "--centered", "axes": "--axes"}
 _PRECISION = {"bits": "--bits", "families": "--families", "family": "--families",
               "samples": "--samples"}
 _TRIANGULATION = {"kernel": "--kernel", "kernels": "--kernel", "families": "--families",
@@ -158,8 +158,9 @@ def _call(args, timeout=None):
 
 def _value(flag, v):
     if isinstance(v, (list, tuple, np.ndarray)) and flag == "--points":
-        pts = np.asarray(v, dtype=np.float64).reshape(-1, 2)
-        return ";".join(f"{x!r},{y!r}" for x, y in pts.tolist())
+        pts = np.asarray(v, dtype=np.float64)
+        pts = pts if pts.ndim == 2 else pts.reshape(-1, 2)  # rows of 2 or 3 coordinates
+        return ";".join(",".join(repr(c) for c in row) for row in pts.tolist())
     if isinstance(v, (list, tuple, np.ndarray)):
         return ",".join(str(x) for x in np.asarray(v).ravel().tolist())
     return str(v)
@@ -368,7 +369,9 @@ def nudge(v, steps):
     return _ulp.nudge(v, steps)
 
 
-_ARITY = {"orient2d": 3, "incircle": 4, "incircle_cosine": 4, "compare_distance": 3}
+_ARITY = {"orient2d": 3, "incircle": 4, "incircle_cosine": 4, "compare_distance": 3,
+          "orient3d": 4, "insphere": 5}
+_SPACE = ("orient3d", "insphere")  # predicates of points (x, y, z)
 
 
 def _lattice_circle(s):
@@ -378,6 +381,17 @@ def _lattice_circle(s):
 
 _KETTNER = [list(c) for c in _ulp.KETTNER_CONFIGURATIONS]
 
+# The coplanar and cospherical configurations of the study's maps of space (their
+# construction is explained in lib/research/src/failure_map.cpp).
+_PLANE_DIAGONAL = [(12.0, 12.0, 1.0), (24.0, 24.0, 3.0), (1.0, 1.0, 12.0), (0.5, 0.5, 0.5)]
+_PLANE_TILTED = [(12.0, -4.5, -6.0), (-9.0, 20.5, -10.0), (-7.0, -8.0, 16.5), (0.75, 0.75, 0.0)]
+
+
+def _lattice_sphere(s):
+    r = 2.0 ** -s
+    return [(2 + x * r, 2 + y * r, 2 + z * r)
+            for x, y, z in ((3, 0, 0), (0, 3, 0), (0, 0, 3), (-1, -2, -2), (-2, 2, -1))]
+
 
 def failure_map_presets():
     """The failure-map presets of the study (lib/research failure_map_presets()), each a
@@ -385,7 +399,10 @@ def failure_map_presets():
     [0, 256)^2, orient2d(p, q, r)), kettner1-pivot-q/-r (the same p moved, passed as
     orient2d(q, r, p) / orient2d(r, p, q)), and four exactly cocircular points a, b, c, d
     (radius 5 * 2^-s around (2, 2)) with d (or a) moved over the centred window
-    [-128, 128)^2 for incircle and incircle_cosine."""
+    [-128, 128)^2 for incircle and incircle_cosine; in space, orient3d of four exactly
+    coplanar points (on x = y and on x + y + z = 3/2) with d (or a) moved in x and y, and
+    insphere of five exactly cospherical points (radius 3 * 2^-s around (2, 2, 2)) with e
+    (or a) moved, over the centred window."""
     def kettner(i, order, name):
         return dict(name=name, predicate="orient2d", points=_KETTNER[i], move=0, order=order,
                     centered=False)
@@ -400,6 +417,16 @@ def failure_map_presets():
     v += [circle("incircle", s, 3, f"incircle-s{s}") for s in (2, 12, 24)]
     v.append(circle("incircle", 12, 0, "incircle-s12-move-a"))
     v += [circle("incircle_cosine", s, 3, f"cosine-s{s}") for s in (2, 12, 24)]
+
+    def space(predicate, points, move, name):
+        return dict(name=name, predicate=predicate, points=points, move=move,
+                    order=list(range(len(points))), centered=True, axes="xy")
+
+    v += [space("orient3d", _PLANE_DIAGONAL, 3, "orient3d-diagonal"),
+          space("orient3d", _PLANE_TILTED, 3, "orient3d-tilted"),
+          space("orient3d", _PLANE_TILTED, 0, "orient3d-tilted-move-a")]
+    v += [space("insphere", _lattice_sphere(s), 4, f"insphere-s{s}") for s in (2, 12, 24)]
+    v.append(space("insphere", _lattice_sphere(12), 0, "insphere-s12-move-a"))
     for p in v:
         p.update(width=256, height=256, step=1)
     return v
@@ -445,26 +472,31 @@ class FailureMap:
 
 
 def compute_failure_map(points, move=0, predicate="orient2d", kernel="double", width=256,
-                        height=256, step=1, centered=False, order=None, reference="exact"):
+                        height=256, step=1, centered=False, order=None, reference="exact", axes="xy"):
     """One predicate evaluated while points[move] moves over a width x height grid: cell
     (j, i) moves its x by offset(i) * step and its y by offset(j) * step representable
     doubles (offset(i) = i, or i - width // 2 when centered), as the failure-map study.
 
     points     3 (orient2d, compare_distance) or 4 (incircle, incircle_cosine) points
-    order      argument k of the predicate is points[order[k]] (default 0, 1, 2[, 3]):
+               (x, y); 4 (orient3d) or 5 (insphere) points (x, y, z)
+    order      argument k of the predicate is points[order[k]] (default 0, 1, 2, ...):
                the floating formulas subtract their first argument (orient2d) or their
-               fourth (incircle)
+               last (the others)
+    axes       in space: the moving point's coordinates on the map's x and y, two letters
+               of "xyz" ("xy": x and y move, z stays)
     kernel     the kernel mapped; reference the exact kernel the map is compared with
-    Returns a FailureMap (.signs, .exact, .wrong, ...).
+    Returns a FailureMap (.signs, .exact, .wrong, ...); its .x and .y are the values of
+    the moving coordinates per column and row.
     """
     from . import _core
 
     if predicate not in _ARITY:
         raise ValueError(f"unknown predicate {predicate!r}: expected one of {', '.join(_ARITY)}")
     n = _ARITY[predicate]
+    dim = 3 if predicate in _SPACE else 2
     pts = np.asarray(points, dtype=np.float64)
-    if pts.shape != (n, 2):
-        raise ValueError(f"{predicate} needs {n} points (an array of shape ({n}, 2)), got shape {pts.shape}")
+    if pts.shape != (n, dim):
+        raise ValueError(f"{predicate} needs {n} points (an array of shape ({n}, {dim})), got shape {pts.shape}")
     if not np.all(np.isfinite(pts)):
         raise ValueError("failure map points must be finite")
     move = int(move)
@@ -478,15 +510,21 @@ def compute_failure_map(points, move=0, predicate="orient2d", kernel="double", w
         raise ValueError("width and height must be at least 1")
     if step < 1:
         raise ValueError("step must be at least 1 ulp")
+    if dim == 2 and axes != "xy":
+        raise ValueError("axes is for orient3d and insphere maps")
+    if not (isinstance(axes, str) and len(axes) == 2 and set(axes) <= set("xyz"[:dim])
+            and axes[0] != axes[1]):
+        raise ValueError(f"axes must be two different letters of x, y, z (e.g. 'xz'), got {axes!r}")
+    ax, ay = "xyz".index(axes[0]), "xyz".index(axes[1])
 
     offsets_x = np.arange(width, dtype=np.int64) - (width // 2 if centered else 0)
     offsets_y = np.arange(height, dtype=np.int64) - (height // 2 if centered else 0)
-    bx, by = float(pts[move, 0]), float(pts[move, 1])
+    bx, by = float(pts[move, ax]), float(pts[move, ay])
     xs = np.array([nudge(bx, int(k) * step) for k in offsets_x])
     ys = np.array([nudge(by, int(k) * step) for k in offsets_y])
-    moving = np.empty((height * width, 2))
-    moving[:, 0] = np.tile(xs, height)
-    moving[:, 1] = np.repeat(ys, width)  # row j = offset j in y
+    moving = np.tile(pts[move], (height * width, 1))
+    moving[:, ax] = np.tile(xs, height)
+    moving[:, ay] = np.repeat(ys, width)  # row j = offset j in y
     args = [moving if order[a] == move else pts[order[a]] for a in range(n)]
     f = getattr(_core, predicate)
     signs = np.asarray(f(*args, kernel=kernel), dtype=np.int8).reshape(height, width)

@@ -29,19 +29,25 @@ static_assert(sizeof(Point2) == 2 * sizeof(double) && alignof(Point2) == alignof
 /// A float64 array, C-contiguous (numpy converts other dtypes and layouts once).
 using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-/// Points of one argument: n rows, or a single point (shape (2,)) that broadcasts.
+static_assert(sizeof(Point3) == 3 * sizeof(double) && alignof(Point3) == alignof(double),
+              "a C-contiguous (n, 3) float64 array is read as n Point3");
+
+/// Points of one argument: n rows, or a single point (shape (2,), or (3,) in space) that
+/// broadcasts.
 struct Points {
     DoubleArray array;  ///< keeps the data alive
-    const Point2* data = nullptr;
+    const Point2* data = nullptr;    ///< the rows, for points of the plane
+    const Point3* data3 = nullptr;   ///< the rows, for points of space (dimension 3)
     std::size_t rows = 0;
-    bool single = false;  ///< shape (2,): one point for every row of the other arguments
+    bool single = false;  ///< shape (2,) or (3,): one point for every row of the other arguments
 
     std::span<const Point2> span() const noexcept { return {data, rows}; }
 };
 
-/// Converts `object` to points, or throws ValueError naming the argument: the shape is
-/// not (n, 2) or (2,), or a coordinate is NaN or infinite (the first such row).
-Points to_points(const py::handle& object, const char* argument);
+/// Converts `object` to points of the plane (dimension 2) or of space (3), or throws
+/// ValueError naming the argument: the shape is not (n, dimension) or (dimension,), or a
+/// coordinate is NaN or infinite (the first such row).
+Points to_points(const py::handle& object, const char* argument, int dimension = 2);
 
 /// numpy's broadcasting over point arguments: every (n, 2) argument has the same n, or
 /// n = 1 (it repeats). `rows` is that n; `shaped` whether some argument has shape (n, 2),

@@ -1,6 +1,7 @@
 // exidel's Python module, exidel._core: the compiled layer under the `exidel` package.
 // Everything here converts and dispatches; the geometry is in exidel::predicates and
 // exidel::delaunay, compiled once with their own floating-point flags.
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -11,7 +12,7 @@
 
 namespace exidel::python {
 
-Points to_points(const py::handle& object, const char* argument) {
+Points to_points(const py::handle& object, const char* argument, int dimension) {
     Points p;
     try {
         p.array = DoubleArray::ensure(object);
@@ -21,27 +22,37 @@ Points to_points(const py::handle& object, const char* argument) {
     if (!p.array) {
         throw py::value_error(std::string(argument) + ": not convertible to a float64 array");
     }
-    if (p.array.ndim() == 1 && p.array.shape(0) == 2) {
+    const auto d = static_cast<py::ssize_t>(dimension);
+    if (p.array.ndim() == 1 && p.array.shape(0) == d) {
         p.single = true;
         p.rows = 1;
-    } else if (p.array.ndim() == 2 && p.array.shape(1) == 2) {
+    } else if (p.array.ndim() == 2 && p.array.shape(1) == d) {
         p.rows = static_cast<std::size_t>(p.array.shape(0));
     } else {
         std::string shape = "(";
-        for (py::ssize_t d = 0; d < p.array.ndim(); ++d) {
-            shape += (d ? ", " : "") + std::to_string(p.array.shape(d));
+        for (py::ssize_t k = 0; k < p.array.ndim(); ++k) {
+            shape += (k ? ", " : "") + std::to_string(p.array.shape(k));
         }
-        throw py::value_error(std::string(argument) + ": expected shape (n, 2) or (2,), got " +
-                              shape + (p.array.ndim() == 1 ? ",)" : ")"));
+        throw py::value_error(std::string(argument) + ": expected shape (n, " + std::to_string(dimension) +
+                              ") or (" + std::to_string(dimension) + ",), got " + shape +
+                              (p.array.ndim() == 1 ? ",)" : ")"));
     }
-    p.data = reinterpret_cast<const Point2*>(p.array.data());
+    const double* c = p.array.data();
     for (std::size_t i = 0; i < p.rows; ++i) {
-        const Point2 q = p.data[i];
-        if (!std::isfinite(q.x) || !std::isfinite(q.y)) {
-            throw py::value_error(std::string(argument) + ": row " + std::to_string(i) +
-                                  " is not finite (" + py::repr(py::float_(q.x)).cast<std::string>() +
-                                  ", " + py::repr(py::float_(q.y)).cast<std::string>() + ")");
+        const double* row = c + i * static_cast<std::size_t>(dimension);
+        if (!std::all_of(row, row + dimension, [](double v) { return std::isfinite(v); })) {
+            std::string values;
+            for (int k = 0; k < dimension; ++k) {
+                values += (k ? ", " : "") + py::repr(py::float_(row[k])).cast<std::string>();
+            }
+            throw py::value_error(std::string(argument) + ": row " + std::to_string(i) + " is not finite (" +
+                                  values + ")");
         }
+    }
+    if (dimension == 3) {
+        p.data3 = reinterpret_cast<const Point3*>(c);
+    } else {
+        p.data = reinterpret_cast<const Point2*>(c);
     }
     return p;
 }

@@ -1,5 +1,5 @@
-// exidel.orient2d, incircle, incircle_cosine, compare_distance: one predicate over rows of
-// point arrays. The loop runs here with the GIL released, compiled once per kernel type
+// exidel.orient2d, incircle, incircle_cosine, compare_distance, and in space orient3d and
+// insphere: one predicate over rows of point arrays. The loop runs here with the GIL released, compiled once per kernel type
 // (one std::visit per call, none per row); a (2,) or (1, 2) argument broadcasts. The
 // adaptive kernel on arrays that do not broadcast uses the batched predicates.
 #include <algorithm>
@@ -62,37 +62,61 @@ void evaluate_batch(const std::array<const Point2*, N>& data, std::int8_t* out, 
     if (rows > 0) std::memcpy(out, signs.data(), rows);
 }
 
-template <Predicate P, std::size_t N>
-py::array_t<std::int8_t> vectorised(const std::array<py::object, N>& args,
-                                    const std::array<const char*, N>& names,
-                                    const std::string& kernel_name) {
+/// The frame of every vectorised predicate: converts the N point arguments (of the
+/// plane, or of space when dimension is 3), broadcasts them, allocates the int8 result,
+/// and calls loop(kernel, points, stride, out, rows) once per call, inside one std::visit
+/// and with the GIL released.
+template <std::size_t N, class Loop>
+py::array_t<std::int8_t> over_rows(const std::array<py::object, N>& args, const std::array<const char*, N>& names,
+                                   const std::string& kernel_name, int dimension, Loop loop) {
     const AnyKernel kernel = to_kernel(kernel_name);
     std::array<Points, N> points;
-    for (std::size_t k = 0; k < N; ++k) points[k] = to_points(args[k], names[k]);
+    for (std::size_t k = 0; k < N; ++k) points[k] = to_points(args[k], names[k], dimension);
     const auto [rows, shaped] = broadcast(points, names);
-    std::array<const Point2*, N> data;
     std::array<std::size_t, N> stride;
-    for (std::size_t k = 0; k < N; ++k) {
-        data[k] = points[k].data;
-        stride[k] = points[k].rows == 1 ? 0 : 1;
-    }
+    for (std::size_t k = 0; k < N; ++k) stride[k] = points[k].rows == 1 ? 0 : 1;
     std::vector<py::ssize_t> shape;
     if (shaped) shape.push_back(static_cast<py::ssize_t>(rows));
     py::array_t<std::int8_t> result(shape);
     std::int8_t* out = result.mutable_data();
     {
         py::gil_scoped_release release;
-        std::visit(
-            [&](const auto& k) {
-                const bool broadcasts = rows > 1 && std::find(stride.begin(), stride.end(), 0) != stride.end();
-                if constexpr (std::is_same_v<std::decay_t<decltype(k)>, AdaptiveKernel>) {
-                    if (!broadcasts) return evaluate_batch<P>(data, out, rows);
-                }
-                evaluate_rows<P>(k, data, stride, out, rows);
-            },
-            kernel);
+        std::visit([&](const auto& k) { loop(k, points, stride, out, rows); }, kernel);
     }
     return result;
+}
+
+template <Predicate P, std::size_t N>
+py::array_t<std::int8_t> vectorised(const std::array<py::object, N>& args,
+                                    const std::array<const char*, N>& names,
+                                    const std::string& kernel_name) {
+    const auto loop = [](const auto& k, const std::array<Points, N>& points, const std::array<std::size_t, N>& stride,
+                         std::int8_t* out, std::size_t rows) {
+        std::array<const Point2*, N> data;
+        for (std::size_t i = 0; i < N; ++i) data[i] = points[i].data;
+        const bool broadcasts = rows > 1 && std::find(stride.begin(), stride.end(), 0) != stride.end();
+        if constexpr (std::is_same_v<std::decay_t<decltype(k)>, AdaptiveKernel>) {
+            if (!broadcasts) return evaluate_batch<P>(data, out, rows);
+        }
+        evaluate_rows<P>(k, data, stride, out, rows);
+    };
+    return over_rows<N>(args, names, kernel_name, 2, loop);
+}
+
+/// orient3d and insphere: the same rows over points of space (no batched path).
+template <SpacePredicate P, std::size_t N>
+py::array_t<std::int8_t> vectorised(const std::array<py::object, N>& args,
+                                    const std::array<const char*, N>& names,
+                                    const std::string& kernel_name) {
+    const auto loop = [](const auto& k, const std::array<Points, N>& points, const std::array<std::size_t, N>& stride,
+                         std::int8_t* out, std::size_t rows) {
+        std::array<Point3, N> q;
+        for (std::size_t i = 0; i < rows; ++i) {
+            for (std::size_t a = 0; a < N; ++a) q[a] = points[a].data3[i * stride[a]];
+            out[i] = static_cast<std::int8_t>(to_int(exidel::evaluate(k, P, q)));
+        }
+    };
+    return over_rows<N>(args, names, kernel_name, 3, loop);
 }
 
 constexpr const char* kernel_doc =
@@ -102,6 +126,12 @@ constexpr const char* kernel_doc =
     " (1, 2) array broadcasts. Returns the signs as int8 (-1, 0, 1), shape (n,), or () when"
     " every argument is one point. A NaN or infinite coordinate raises ValueError naming the"
     " argument and the first bad row.";
+
+constexpr const char* space_doc =
+    " kernel: any spelling of `exidel kernels`. Each point argument is an array of shape"
+    " (n, 3) or one point (3,), float64; a single point or a (1, 3) array broadcasts. Returns"
+    " the signs as int8 (-1, 0, 1), shape (n,), or () when every argument is one point. A NaN"
+    " or infinite coordinate raises ValueError naming the argument and the first bad row.";
 
 /// The benchmark's reference: the C++ loop alone over points already in memory (the
 /// arguments converted beforehand, no result array allocated per call), in seconds.
@@ -173,6 +203,29 @@ void bind_predicates(py::module_& m) {
         },
         py::arg("c"), py::arg("p"), py::arg("q"), py::arg("kernel") = "adaptive",
         (std::string("Sign of |p - c|^2 - |q - c|^2.") + kernel_doc).c_str());
+    m.def(
+        "orient3d",
+        [](py::object a, py::object b, py::object c, py::object d, const std::string& kernel) {
+            return vectorised<SpacePredicate::orient3d, 4>({a, b, c, d}, {"a", "b", "c", "d"}, kernel);
+        },
+        py::arg("a"), py::arg("b"), py::arg("c"), py::arg("d"), py::arg("kernel") = "adaptive",
+        (std::string("Shewchuk's orient3d: the sign of det(a - d, b - d, c - d); +1 when d lies"
+                     " below the plane through a, b, c (a, b, c counter-clockwise seen from"
+                     " above), -1 above, 0 coplanar. The opposite of CGAL's orientation.") +
+         space_doc)
+            .c_str());
+    m.def(
+        "insphere",
+        [](py::object a, py::object b, py::object c, py::object d, py::object e, const std::string& kernel) {
+            return vectorised<SpacePredicate::insphere, 5>({a, b, c, d, e}, {"a", "b", "c", "d", "e"}, kernel);
+        },
+        py::arg("a"), py::arg("b"), py::arg("c"), py::arg("d"), py::arg("e"), py::arg("kernel") = "adaptive",
+        (std::string("Shewchuk's insphere: +1 when e is inside the sphere through a, b, c, d"
+                     " with orient3d(a, b, c, d) positive, -1 outside, 0 on it; the sign flips"
+                     " with orient3d(a, b, c, d). The opposite of CGAL's"
+                     " side_of_oriented_sphere.") +
+         space_doc)
+            .c_str());
     m.def("_loop_seconds", &loop_seconds, py::arg("predicate"), py::arg("args"),
           py::arg("kernel") = "adaptive",
           "For benchmarks: seconds of the bare C++ loop of orient2d or incircle over the rows.");

@@ -32,6 +32,31 @@ def incircle_exact(a, b, c, d):
     return sign(det)
 
 
+def det3(m):
+    return (m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+            - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+            + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]))
+
+
+def orient3d_exact(a, b, c, d):
+    """Shewchuk's orient3d in rationals: the sign of det(a - d, b - d, c - d)."""
+    dd = [Fraction(float(v)) for v in d]
+    return sign(det3([[Fraction(float(v)) - w for v, w in zip(p, dd)] for p in (a, b, c)]))
+
+
+def insphere_exact(a, b, c, d, e):
+    """Shewchuk's insphere in rationals: the 4 x 4 determinant of the rows
+    (p - e, |p - e|^2), p = a, b, c, d, expanded along the last column."""
+    ee = [Fraction(float(v)) for v in e]
+    rows = [[Fraction(float(v)) - w for v, w in zip(p, ee)] for p in (a, b, c, d)]
+    lift = [x * x + y * y + z * z for x, y, z in rows]
+    det = 0
+    for k in range(4):
+        minor = [rows[i] for i in range(4) if i != k]
+        det += (-1) ** (k + 3) * lift[k] * det3(minor)
+    return sign(det)
+
+
 def compare_distance_exact(c, p, q):
     (cx, cy), (px, py), (qx, qy) = F(c), F(p), F(q)
     return sign((px - cx) ** 2 + (py - cy) ** 2 - (qx - cx) ** 2 - (qy - cy) ** 2)

@@ -1,5 +1,6 @@
-"""exidel.orient2d, incircle, incircle_cosine, compare_distance: exactness against rational
-arithmetic, agreement with the exidel command, broadcasting and bad input."""
+"""exidel.orient2d, incircle, incircle_cosine, compare_distance, and in space orient3d and
+insphere: exactness against rational arithmetic, agreement with the exidel command,
+broadcasting and bad input."""
 
 import math
 import threading
@@ -8,7 +9,8 @@ import numpy as np
 import pytest
 
 import exidel
-from conftest import (compare_distance_exact, incircle_exact, orient2d_exact, run_cli)
+from conftest import (compare_distance_exact, incircle_exact, insphere_exact, orient2d_exact,
+                      orient3d_exact, run_cli)
 
 EXACT = ["adaptive", "exact", "exact-cpp"]
 
@@ -169,3 +171,87 @@ def test_threads_can_call_concurrently(rng):
     for t in threads:
         t.join()
     assert all((r == want).all() for r in results)
+
+
+# --- the predicates of space ------------------------------------------------------------
+
+def near_coplanar(rng, n):
+    """Four points: three far apart, the fourth an affine combination of them with dyadic
+    weights, rounded, then moved by an ulp in each coordinate at random."""
+    a, b, c = (rng.random((n, 3)) * 2 - 1 for _ in range(3))
+    s, t = (rng.integers(-8, 16, size=(n, 1)) / 4 for _ in range(2))
+    d = a + s * (b - a) + t * (c - a)
+    d = np.nextafter(d, np.where(rng.random((n, 3)) < 0.5, -np.inf, np.inf))
+    return a, b, c, d
+
+
+def near_cospherical(rng, n):
+    """Five points of a unit sphere around (100, 100, 100), rounded, then moved by an ulp."""
+    v = rng.normal(size=(n, 5, 3))
+    pts = 100 + v / np.linalg.norm(v, axis=-1, keepdims=True)
+    pts = np.nextafter(pts, np.where(rng.random(pts.shape) < 0.5, -np.inf, np.inf))
+    return tuple(pts[:, k] for k in range(5))
+
+
+@pytest.mark.parametrize("kernel", EXACT + ["mpfr:2000"])
+def test_orient3d_and_insphere_exact_near_degeneracy(rng, kernel):
+    q = near_coplanar(rng, 300)
+    got = exidel.orient3d(*q, kernel=kernel)
+    assert got.dtype == np.int8 and got.shape == (300,)
+    assert got.tolist() == [orient3d_exact(*r) for r in zip(*q)]
+    s = near_cospherical(rng, 150)
+    assert exidel.insphere(*s, kernel=kernel).tolist() == [insphere_exact(*r) for r in zip(*s)]
+
+
+def test_double_kernel_is_wrong_in_space_and_exact_kernels_agree(rng):
+    q = near_coplanar(rng, 2000)
+    exact = exidel.orient3d(*q, kernel="exact")
+    assert (exidel.orient3d(*q, kernel="double") != exact).any()
+    assert (exidel.orient3d(*q, kernel="exact-cpp") == exact).all()
+    s = near_cospherical(rng, 2000)
+    exact = exidel.insphere(*s, kernel="exact")
+    assert (exidel.insphere(*s, kernel="double") != exact).any()
+    assert (exidel.insphere(*s) == exact).all()
+
+
+def test_space_predicates_signs_conventions_and_broadcasting():
+    o, x, y, z = [0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]
+    # Shewchuk's convention: d below the plane of a counter-clockwise a, b, c is positive.
+    assert exidel.orient3d(o, x, y, [0, 0, -1]) == 1 and exidel.orient3d(o, x, y, z) == -1
+    assert exidel.orient3d(o, x, y, [5, -3, 0]) == 0
+    a, b, c, d = o, x, y, [0, 0, -1]  # orient3d(a, b, c, d) > 0
+    assert exidel.insphere(a, b, c, d, [0.3, 0.3, -0.3]) == 1
+    assert exidel.insphere(a, b, c, d, [3, 3, 3]) == -1
+    assert exidel.insphere(a, b, c, d, [1, 1, -1]) == 0  # a corner of the cube: on the sphere
+    assert exidel.insphere(b, a, c, d, [0.3, 0.3, -0.3]) == -1  # flips with orient3d
+    e = np.array([[0.3, 0.3, -0.3], [3, 3, 3], [1, 1, -1]])
+    got = exidel.insphere(a, b, c, [[0, 0, -1]], e, kernel="double")
+    assert got.shape == (3,) and got.tolist() == [1, -1, 0]
+    empty = exidel.orient3d(np.empty((0, 3)), o, x, y)
+    assert empty.shape == (0,) and empty.dtype == np.int8
+    for kernel in ["double", "long-double", "adaptive", "exact", "exact-cpp", "mpfr:24"]:
+        assert exidel.orient3d(o, x, y, [0, 0, -1], kernel=kernel) == 1
+
+
+def test_space_predicates_bad_input():
+    a = np.zeros((4, 3))
+    a[2, 2] = np.inf
+    with pytest.raises(ValueError, match=r"a: row 2 is not finite \(0.0, 0.0, inf\)"):
+        exidel.orient3d(a, [1, 0, 0], [0, 1, 0], [0, 0, 1])
+    with pytest.raises(ValueError, match=r"e: expected shape \(n, 3\) or \(3,\), got \(2, 2\)"):
+        exidel.insphere([0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1], np.zeros((2, 2)))
+    with pytest.raises(ValueError, match="rows"):
+        exidel.orient3d(np.zeros((3, 3)), np.zeros((2, 3)), [0, 1, 0], [0, 0, 1])
+    with pytest.raises(ValueError, match="adaptive"):
+        exidel.orient3d([0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1], kernel="fast")
+
+
+def test_space_predicates_agree_with_the_exidel_command(rng, exidel_cli):
+    q = near_coplanar(rng, 60)
+    s = near_cospherical(rng, 60)
+    h = lambda *ps: " ".join(float(v).hex() for p in ps for v in p)  # noqa: E731
+    lines = ["orient3d " + h(*r) for r in zip(*q)] + ["insphere " + h(*r) for r in zip(*s)]
+    for kernel in ["double", "adaptive", "mpfr:64"]:
+        expected = np.concatenate([exidel.orient3d(*q, kernel=kernel), exidel.insphere(*s, kernel=kernel)])
+        out = run_cli(exidel_cli, "predicate", "--kernel", kernel, stdin="\n".join(lines) + "\n")
+        assert [int(v) for v in out.split()] == expected.tolist()

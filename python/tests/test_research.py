@@ -67,7 +67,8 @@ def check_report(result, study, *flags):
 
 # --- the studies through the command -------------------------------------------------------
 
-FM_PRESETS = ["kettner1", "kettner1-pivot-q", "incircle-s2", "incircle-s12-move-a", "cosine-s2"]
+FM_PRESETS = ["kettner1", "kettner1-pivot-q", "incircle-s2", "incircle-s12-move-a", "cosine-s2",
+              "orient3d-tilted-move-a", "insphere-s2"]
 FM_KERNELS = ["double", "long-double", "adaptive"]
 
 
@@ -100,7 +101,7 @@ def test_python_failure_map_equals_the_study(exidel_cli, fm_study):
         counts = " / ".join(map(str, m.counts()))
         exact = " / ".join(map(str, m.counts(exact=True)))
         assert (counts, exact) == (row["neg / zero / pos"], row["exact neg / zero / pos"])
-    assert {"kettner1", "incircle-s2"} <= set(t["preset"][t["wrong"] > 0])
+    assert {"kettner1", "incircle-s2", "orient3d-tilted-move-a", "insphere-s2"} <= set(t["preset"][t["wrong"] > 0])
 
 
 def panels(png, width, height):
@@ -123,7 +124,7 @@ def colours(signs):
 
 
 def test_python_failure_map_equals_every_cell_of_the_pictures(exidel_cli, fm_study):
-    for preset in ("kettner1", "incircle-s2"):
+    for preset in ("kettner1", "incircle-s2", "orient3d-tilted-move-a"):
         m = research.compute_failure_map(**research.failure_map_preset(preset), kernel="double")
         signs, exact, _ = panels(fm_study.out / f"{preset}-double.png", 256, 256)
         assert np.array_equal(signs, colours(m.signs))
@@ -142,6 +143,11 @@ def test_custom_failure_map_conventions(exidel_cli, tmp_path):
              move=3, order=[3, 0, 1, 2], step=2, centered=False, width=30, height=10),
         dict(predicate="incircle_cosine", points=[(0.75, 2.0), (3.0, 2.75), (1.25, 3.0), (2.75, 1.0)],
              move=1, step=5, centered=True, width=30, height=10),
+        dict(predicate="orient3d", points=[(12.0, -4.5, -6.0), (-9.0, 20.5, -10.0), (-7.0, -8.0, 16.5),
+                                           (0.75, 0.75, 0.0)],
+             move=3, order=[3, 0, 1, 2], step=1, centered=True, width=36, height=20, axes="zx"),
+        dict(predicate="insphere", points=research.failure_map_preset("insphere-s2")["points"],
+             move=4, step=3, centered=True, width=28, height=30, axes="yz"),
     ]
     wrong = []
     for k, spec in enumerate(cases):
@@ -196,7 +202,15 @@ def test_compute_failure_map_rejects_bad_specs():
     with pytest.raises(ValueError, match="moving point"):
         research.compute_failure_map(pts, move=3)
     with pytest.raises(ValueError, match="unknown predicate"):
-        research.compute_failure_map(pts, predicate="orient3d")
+        research.compute_failure_map(pts, predicate="orient4d")
+    with pytest.raises(ValueError, match=r"shape \(4, 3\)"):
+        research.compute_failure_map(pts + [(1.0, 2.0)], predicate="orient3d")
+    with pytest.raises(ValueError, match="axes is for orient3d"):
+        research.compute_failure_map(pts, axes="xz")
+    space = research.failure_map_preset("orient3d-tilted")
+    for bad in ("xx", "xw", "x", (0, 1)):
+        with pytest.raises(ValueError, match="axes must be"):
+            research.compute_failure_map(**dict(space, axes=bad))
     with pytest.raises(ValueError, match="unknown failure-map preset"):
         research.failure_map_preset("kettner9")
 

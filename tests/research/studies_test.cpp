@@ -59,19 +59,23 @@ RunOptions quiet_run(const fs::path& out, unsigned jobs = 1) {
 
 // --- failure maps ------------------------------------------------------------------
 
+/// Some wrong cell where the exact sign is positive, and some where it is negative.
+bool wrong_on_both_sides(const FailureMap& m) {
+    bool where_positive = false, where_negative = false;
+    for (std::size_t c = 0; c < m.signs.size(); ++c) {
+        if (m.signs[c] == m.exact[c]) continue;
+        where_positive |= m.exact[c] == Sign::positive;
+        where_negative |= m.exact[c] == Sign::negative;
+    }
+    return where_positive && where_negative;
+}
+
 TEST(FailureMap, Kettner1BreaksDoubleOnBothSidesOfTheLineAndNeverAdaptiveOrExact) {
     const FailureMapSpec spec = failure_map_preset("kettner1");
     const FailureMap dbl = compute_failure_map(spec, DoubleKernel{}, 2);
     EXPECT_GT(dbl.wrong, 0u);
     // The published picture: wrong signs on both sides of the line, not just on it.
-    std::uint64_t wrong_where_positive = 0, wrong_where_negative = 0;
-    for (std::size_t c = 0; c < dbl.signs.size(); ++c) {
-        if (dbl.signs[c] == dbl.exact[c]) continue;
-        wrong_where_positive += dbl.exact[c] == Sign::positive;
-        wrong_where_negative += dbl.exact[c] == Sign::negative;
-    }
-    EXPECT_GT(wrong_where_positive, 0u);
-    EXPECT_GT(wrong_where_negative, 0u);
+    EXPECT_TRUE(wrong_on_both_sides(dbl));
     EXPECT_EQ(dbl.exact_counts.zero, 256u);  // p on the line y = x: the diagonal cells
 
     EXPECT_EQ(compute_failure_map(spec, AdaptiveKernel{}, 2).wrong, 0u);
@@ -107,6 +111,86 @@ TEST(FailureMap, RejectsBadSpecs) {
     EXPECT_THROW(parse_kernel("mpfr:1"), std::invalid_argument);
     EXPECT_THROW(parse_kernel("float"), std::invalid_argument);
     EXPECT_EQ(kernel_name(parse_kernel("mpfr:64")), "mpfr:64");
+}
+
+// The maps of space: the exact signs draw the plane or sphere the points were built on,
+// the double kernel errs next to it on both sides, and the moving point's axes are those
+// the spec names.
+TEST(FailureMap, SpaceMapsDrawTheExactPlaneAndBreakTheDoubleKernel) {
+    // Exact zeros counted by hand. diagonal: d = (1/2, 1/2, 1/2) on the plane x = y, the
+    // cells where the offsets of d.x and d.y are equal (one binade on each side of 1/2,
+    // the same ulp for x and y): all 256 diagonal cells. tilted: d = (3/4, 3/4, 0) on
+    // x + y + z = 3/2, one ulp (2^-53) over the window: offsets kx + ky = 0 with ky < 128,
+    // 255 cells. tilted-move-a: a = (12, -4.5, -6), ulps 2^-49 in x and 2^-50 in y:
+    // 2 kx + ky = 0 with ky in [-128, 127], 128 cells. The spheres pass through a window
+    // cell only at the lattice point itself.
+    const std::pair<const char*, std::uint64_t> zeros[] = {
+        {"orient3d-diagonal", 256}, {"orient3d-tilted", 255}, {"orient3d-tilted-move-a", 128},
+        {"insphere-s2", 1},         {"insphere-s12", 1},      {"insphere-s24", 1},
+        {"insphere-s12-move-a", 1}};
+    for (const auto& [name, expected_zeros] : zeros) {
+        const FailureMapSpec spec = failure_map_preset(name);
+        ASSERT_TRUE(spec.space) << name;
+        const FailureMap dbl = compute_failure_map(spec, DoubleKernel{}, 2);
+        EXPECT_EQ(dbl.exact_counts.zero, expected_zeros) << name;
+        // The centre cell is the unmoved, exactly degenerate configuration.
+        EXPECT_EQ(dbl.exact[128 * 256 + 128], Sign::zero) << name;
+        EXPECT_GT(dbl.wrong, 0u) << name;
+        EXPECT_EQ(compute_failure_map(spec, GmpExactKernel{}, 2).wrong, 0u) << name;
+        EXPECT_EQ(compute_failure_map(spec, CppIntExactKernel{}, 2).wrong, 0u) << name;
+    }
+    // Kettner's picture in space: wrong signs on both sides of the plane, not just on it.
+    EXPECT_TRUE(wrong_on_both_sides(compute_failure_map(failure_map_preset("orient3d-tilted"), DoubleKernel{}, 2)));
+}
+
+TEST(FailureMap, SpaceMapAxesSwapTransposesTheMap) {
+    FailureMapSpec xy = failure_map_preset("orient3d-tilted");
+    xy.width = xy.height = 40;
+    FailureMapSpec yx = xy;
+    yx.axes = {1, 0};
+    const FailureMap a = compute_failure_map(xy, DoubleKernel{}, 1), b = compute_failure_map(yx, DoubleKernel{}, 2);
+    for (std::size_t j = 0; j < 40; ++j) {
+        for (std::size_t i = 0; i < 40; ++i) {
+            ASSERT_EQ(a.signs[j * 40 + i], b.signs[i * 40 + j]) << i << ", " << j;
+            ASSERT_EQ(a.exact[j * 40 + i], b.exact[i * 40 + j]) << i << ", " << j;
+        }
+    }
+    // Moving z instead of y: z = 0 steps through the subnormals (k 2^-1074), x in steps of
+    // 2^-53, so x decides the side wherever it moved (every column but the middle one is
+    // constant), and z only on the middle column, zero at its own offset 0 alone.
+    FailureMapSpec xz = xy;
+    xz.axes = {0, 2};
+    const FailureMap z = compute_failure_map(xz, GmpExactKernel{}, 2);
+    for (std::size_t j = 0; j < 40; ++j) {
+        for (std::size_t i = 0; i < 40; ++i) {
+            if (i != 20) ASSERT_EQ(z.exact[j * 40 + i], z.exact[i]) << i << ", " << j;
+        }
+    }
+    EXPECT_EQ(z.exact_counts.zero, 1u);
+    EXPECT_EQ(z.exact[20 * 40 + 20], Sign::zero);
+    EXPECT_NE(z.exact[19 * 40 + 20], Sign::zero);
+    EXPECT_EQ(z.exact[19 * 40 + 20], -z.exact[21 * 40 + 20]);
+    EXPECT_EQ(z.exact[19 * 40 + 20], z.exact[19]);  // moving z down is moving x down
+}
+
+TEST(FailureMap, RejectsBadSpaceSpecs) {
+    FailureMapSpec s = failure_map_preset("insphere-s2");
+    s.points3.pop_back();
+    EXPECT_THROW(validate(s), std::invalid_argument);
+    s = failure_map_preset("insphere-s2");
+    s.pivot = 5;
+    EXPECT_THROW(validate(s), std::invalid_argument);
+    s = failure_map_preset("orient3d-tilted");
+    s.axes = {1, 1};
+    EXPECT_THROW(validate(s), std::invalid_argument);
+    s.axes = {0, 3};
+    EXPECT_THROW(validate(s), std::invalid_argument);
+    s = failure_map_preset("orient3d-tilted");
+    s.points3[1].z = std::numeric_limits<double>::infinity();
+    EXPECT_THROW(validate(s), std::invalid_argument);
+    s = failure_map_preset("orient3d-tilted");
+    s.order = {0, 1, 2, 2};
+    EXPECT_THROW(validate(s), std::invalid_argument);
 }
 
 TEST(FailureMap, StudyWritesAValidPngAndAReportThatReferencesIt) {
@@ -428,6 +512,32 @@ TEST(Triangulation, OrdersParseAndTheStudyRejectsAutomatic) {
     EXPECT_EQ(run_cli("study triangulation --order sideways --out " +
                       work_dir("triangulation_bad_order").string()),
               2);
+#endif
+}
+
+// A custom map of space from the command line: the moving point's axes, and clear usage
+// errors for points of the wrong dimension and bad axes.
+TEST(FailureMap, CommandLineDrawsACustomSpaceMap) {
+#ifdef EXIDEL_CLI_PATH
+    const fs::path out = work_dir("failure_map_space_cli");
+    const std::string points = "'12,-4.5,-6;-9,20.5,-10;-7,-8,16.5;0.75,0.75,0'";
+    const std::string map = "study failure-map --predicate orient3d --points " + points +
+                            " --move 3 --centered --width 24 --height 24 --kernel double --out ";
+    EXPECT_EQ(run_cli(map + out.string() + " --axes yx"), 0);
+    const std::string report = read_file(out / "report.md");
+    EXPECT_NE(report.find("--axes yx"), std::string::npos);  // the rerun line
+    EXPECT_NE(report.find("custom orient3d map, point 3 moved in y and x"), std::string::npos);
+    EXPECT_NE(report.find("(0.75, 0.75, 0)"), std::string::npos);
+    EXPECT_EQ(run_cli(map + out.string() + " --axes xx"), 2);
+    EXPECT_EQ(run_cli(map + out.string() + " --axes xw"), 2);
+    EXPECT_EQ(run_cli(map + out.string() + " --move 4"), 2);
+    EXPECT_EQ(run_cli("study failure-map --predicate orient3d --points '1,2;3,4;5,6;7,8' --out " + out.string()), 2);
+    EXPECT_EQ(run_cli("study failure-map --predicate orient2d --points '1,2;3,4;5,6' --axes xz --out " +
+                      out.string()),
+              2);
+    EXPECT_EQ(run_cli("study failure-map --predicate insphere3 --points '1,2;3,4;5,6' --out " + out.string()), 2);
+#else
+    GTEST_SKIP() << "the exidel binary is not built";
 #endif
 }
 

@@ -60,6 +60,51 @@ FailureMapSpec circle(Formulation f, int s, std::size_t pivot, std::string name)
     return spec;
 }
 
+// Four exactly coplanar points, the last one moved. "diagonal": the plane x = y, which holds
+// Kettner's first line (1/2, 1/2), (12, 12), (24, 24) lifted to heights 1/2, 1 and 3, with
+// a third point (1, 1, 12) off that line; the moving point (1/2, 1/2, 1/2) stays on the
+// plane where its x and y are equal, the diagonal of the map. "tilted": the plane
+// x + y + z = 3/2, through points of magnitude 4..24; the moving point (3/4, 3/4, 0) stays
+// in one binade over the window, so the plane is the anti-diagonal. Every coordinate is a
+// dyadic rational and the sums are exact, so the points are exactly coplanar; the
+// differences the formula takes with the moving point round as soon as it moves (the
+// others are 2^4..2^5 times larger).
+std::vector<Point3> coplanar(bool tilted) {
+    if (tilted) return {{12, -4.5, -6}, {-9, 20.5, -10}, {-7, -8, 16.5}, {0.75, 0.75, 0}};
+    return {{12, 12, 1}, {24, 24, 3}, {1, 1, 12}, {0.5, 0.5, 0.5}};
+}
+
+// Five exactly cospherical points: points of norm 3 on the integer lattice, (3, 0, 0),
+// (0, 3, 0), (0, 0, 3), (-1, -2, -2), (-2, 2, -1), around (2, 2, 2) and scaled by 2^-s (exact
+// for the s used). orient3d(a, b, c, d) = det((4,2,2), (1,5,2), (1,2,5)) * 2^-3s > 0, so
+// insphere is positive inside.
+std::vector<Point3> lattice_sphere(int s) {
+    const double r = testing::dyadic(1, -s);
+    const auto at = [&](int x, int y, int z) { return Point3{2 + x * r, 2 + y * r, 2 + z * r}; };
+    return {at(3, 0, 0), at(0, 3, 0), at(0, 0, 3), at(-1, -2, -2), at(-2, 2, -1)};
+}
+
+FailureMapSpec space_map(SpacePredicate p, std::vector<Point3> points, std::size_t pivot, std::string name,
+                         std::string what) {
+    FailureMapSpec spec;
+    spec.name = std::move(name);
+    spec.space = p;
+    spec.points3 = std::move(points);
+    spec.pivot = pivot;
+    spec.order.resize(spec.points3.size());
+    std::iota(spec.order.begin(), spec.order.end(), std::size_t{0});
+    spec.centered = true;
+    const std::string letters = "abcde";
+    std::string args;
+    for (std::size_t i = 0; i < spec.points3.size(); ++i) args += (i ? ", " : "") + letters.substr(i, 1);
+    spec.description = std::string(predicate_name(p)) + "(" + args + ") for " + what + "; " + letters[pivot] +
+                       " moved in x and y over [-128, 128)^2 ulp steps; the formula subtracts " +
+                       letters[spec.points3.size() - 1];
+    return spec;
+}
+
+double& coordinate(Point3& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
+
 const Rgb colour_positive{66, 120, 200}, colour_zero{255, 255, 255}, colour_negative{245, 190, 60},
     colour_wrong{215, 25, 28};
 
@@ -94,6 +139,18 @@ std::vector<FailureMapSpec> failure_map_presets() {
     for (int s : {2, 12, 24}) {
         v.push_back(circle(Formulation::incircle_cosine, s, 3, "cosine-s" + std::to_string(s)));
     }
+    const std::string diagonal = "four exactly coplanar points on the plane x = y (Kettner's first line lifted)",
+                      tilted = "four exactly coplanar points on the plane x + y + z = 3/2";
+    v.push_back(space_map(SpacePredicate::orient3d, coplanar(false), 3, "orient3d-diagonal", diagonal));
+    v.push_back(space_map(SpacePredicate::orient3d, coplanar(true), 3, "orient3d-tilted", tilted));
+    v.push_back(space_map(SpacePredicate::orient3d, coplanar(true), 0, "orient3d-tilted-move-a", tilted));
+    for (int s : {2, 12, 24}) {
+        v.push_back(space_map(SpacePredicate::insphere, lattice_sphere(s), 4, "insphere-s" + std::to_string(s),
+                              "five exactly cospherical points (radius 3 * 2^-" + std::to_string(s) +
+                                  " around (2, 2, 2))"));
+    }
+    v.push_back(space_map(SpacePredicate::insphere, lattice_sphere(12), 0, "insphere-s12-move-a",
+                          "five exactly cospherical points (radius 3 * 2^-12 around (2, 2, 2))"));
     return v;
 }
 
@@ -108,16 +165,23 @@ FailureMapSpec failure_map_preset(std::string_view name) {
 }
 
 void validate(const FailureMapSpec& s) {
-    const std::size_t n = point_count(s.formulation);
-    if (s.points.size() != n) {
-        throw std::invalid_argument(std::string(predicate_name(s.formulation)) + " needs " +
-                                    std::to_string(n) + " points, got " +
-                                    std::to_string(s.points.size()));
+    const std::size_t n = s.arity();
+    const std::size_t given = s.space ? s.points3.size() : s.points.size();
+    if (given != n) {
+        throw std::invalid_argument(std::string(s.predicate()) + " needs " + std::to_string(n) +
+                                    " points, got " + std::to_string(given));
     }
+    const auto finite = [](double v) { return std::isfinite(v); };
     for (const Point2& p : s.points) {
-        if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
+        if (!finite(p.x) || !finite(p.y)) throw std::invalid_argument("failure map points must be finite");
+    }
+    for (const Point3& p : s.points3) {
+        if (!finite(p.x) || !finite(p.y) || !finite(p.z)) {
             throw std::invalid_argument("failure map points must be finite");
         }
+    }
+    if (s.space && (s.axes[0] < 0 || s.axes[0] > 2 || s.axes[1] < 0 || s.axes[1] > 2 || s.axes[0] == s.axes[1])) {
+        throw std::invalid_argument("the moving point's axes must be two different ones of x, y, z");
     }
     if (s.pivot >= n) throw std::invalid_argument("the moving point index must be below " + std::to_string(n));
     std::vector<std::size_t> sorted = s.order;
@@ -144,20 +208,35 @@ FailureMap compute_failure_map(const FailureMapSpec& spec, const Kernel& kernel,
     m.kernel = kernel_name(kernel);
     const std::size_t W = static_cast<std::size_t>(spec.width), H = static_cast<std::size_t>(spec.height);
     // Coordinates of the moving point per column and per row, computed once (nudge walks
-    // one ulp at a time).
-    const Point2 base = spec.points[spec.pivot];
+    // one ulp at a time). A plane map moves x and y; a space map its two axes.
+    Point3 moved3 = spec.space ? spec.points3[spec.pivot] : Point3{};
+    const double base_x = spec.space ? coordinate(moved3, spec.axes[0]) : spec.points[spec.pivot].x;
+    const double base_y = spec.space ? coordinate(moved3, spec.axes[1]) : spec.points[spec.pivot].y;
     const auto offset = [&](std::size_t i, std::size_t size) {
         const auto k = static_cast<std::int64_t>(i) - (spec.centered ? static_cast<std::int64_t>(size / 2) : 0);
         return k * spec.step;
     };
     std::vector<double> xs(W), ys(H);
-    for (std::size_t i = 0; i < W; ++i) xs[i] = testing::nudge(base.x, offset(i, W));
-    for (std::size_t j = 0; j < H; ++j) ys[j] = testing::nudge(base.y, offset(j, H));
+    for (std::size_t i = 0; i < W; ++i) xs[i] = testing::nudge(base_x, offset(i, W));
+    for (std::size_t j = 0; j < H; ++j) ys[j] = testing::nudge(base_y, offset(j, H));
 
     m.signs.resize(W * H);
     m.exact.resize(W * H);
-    const std::size_t n = point_count(spec.formulation);
+    const std::size_t n = spec.arity();
     for_each_chunk(H, jobs, progress, [&](std::size_t j) {
+        if (spec.space) {
+            std::vector<Point3> pts = spec.points3;
+            std::array<Point3, 5> args{};
+            for (std::size_t i = 0; i < W; ++i) {
+                coordinate(pts[spec.pivot], spec.axes[0]) = xs[i];
+                coordinate(pts[spec.pivot], spec.axes[1]) = ys[j];
+                for (std::size_t a = 0; a < n; ++a) args[a] = pts[spec.order[a]];
+                const std::span<const Point3> q(args.data(), n);
+                m.signs[j * W + i] = std::visit([&](const auto& k) { return evaluate(k, *spec.space, q); }, kernel);
+                m.exact[j * W + i] = evaluate(GmpExactKernel{}, *spec.space, q);
+            }
+            return;
+        }
         std::vector<Point2> pts = spec.points;
         std::array<Point2, 4> args{};
         for (std::size_t i = 0; i < W; ++i) {
@@ -200,14 +279,14 @@ Image render_failure_map(const FailureMap& m) {
     const int line = glyph_height * 2;
 
     // Title: what is evaluated, which point moves, and the kernel's score.
-    const bool orient = m.spec.formulation == Formulation::orient2d;
-    const std::string letters = orient ? "pqr" : "abcd";
+    const bool kettner_letters = !m.spec.space && m.spec.formulation == Formulation::orient2d;
+    const std::string letters = kettner_letters ? "pqr" : "abcde";
     const char moved = letters[m.spec.pivot];
     std::string args;
     for (std::size_t a = 0; a < m.spec.order.size(); ++a) {
         args += (a ? ", " : "") + std::string(1, letters[m.spec.order[a]]);
     }
-    const std::string title = m.spec.name + ": " + std::string(predicate_name(m.spec.formulation)) + "(" + args +
+    const std::string title = m.spec.name + ": " + std::string(m.spec.predicate()) + "(" + args +
                               ") as " + std::string(1, moved) + " moves, kernel " + m.kernel + ": " +
                               std::to_string(m.wrong) + " of " + std::to_string(m.signs.size()) + " signs wrong";
     draw_text(img, 8, 8, title, ink, fitting(title, l.width - 16));
@@ -249,7 +328,9 @@ Image render_failure_map(const FailureMap& m) {
         }
     }
     const std::string unit = m.spec.step == 1 ? "ulps" : "ulps, steps of " + std::to_string(m.spec.step);
-    const std::string x_label = "x: offset of " + std::string(1, moved) + ".x (" + unit + ")";
+    // The coordinates that move: x and y, or a space map's two axes.
+    const char x_axis = m.spec.space ? "xyz"[m.spec.axes[0]] : 'x', y_axis = m.spec.space ? "xyz"[m.spec.axes[1]] : 'y';
+    const std::string x_label = "x: offset of " + std::string(1, moved) + "." + x_axis + " (" + unit + ")";
     draw_text(img, l.panel_x[0] + (l.panel_x[2] + l.panel_width - l.panel_x[0] - text_width(x_label, ts)) / 2,
               tick_y + line + 4, x_label, ink, ts);
     const std::string y_lo = std::to_string(offset(0, H)), y_hi = std::to_string(offset(H - 1, H));
@@ -259,7 +340,7 @@ Image render_failure_map(const FailureMap& m) {
         draw_text(img, l.panel_x[0] - 6 - text_width("0", ts), l.panel_y + (H - 1 - H / 2) * scale - line / 2, "0",
                   grey, ts);
     }
-    const std::string y_label = "y: offset of " + std::string(1, moved) + ".y (" + unit + ")";
+    const std::string y_label = "y: offset of " + std::string(1, moved) + "." + y_axis + " (" + unit + ")";
     draw_text_vertical(img, 8, l.panel_y + (l.panel_height + text_width(y_label, fitting(y_label, l.panel_height))) / 2,
                        y_label, ink, fitting(y_label, l.panel_height));
 
@@ -294,7 +375,8 @@ FailureMapStudy run_failure_map_study(const FailureMapOptions& options, const Ru
             // The circle pair at s = 2, not 12: at s = 12 the double kernel gets the very
             // same cells wrong with both formulas (byte-identical maps, checked when this
             // list was chosen), so that pair showed nothing; at s = 2 they differ.
-            for (const char* name : {"kettner1", "kettner2", "kettner3", "incircle-s2", "cosine-s2"}) {
+            for (const char* name :
+                 {"kettner1", "kettner2", "kettner3", "incircle-s2", "cosine-s2", "orient3d-tilted", "insphere-s2"}) {
                 specs.push_back(failure_map_preset(name));
             }
         } else {
@@ -329,6 +411,10 @@ FailureMapStudy run_failure_map_study(const FailureMapOptions& options, const Ru
         pts.precision(17);
         for (std::size_t i = 0; i < spec.points.size(); ++i) {
             pts << (i ? ", " : "") << '(' << spec.points[i].x << ", " << spec.points[i].y << ')';
+        }
+        for (std::size_t i = 0; i < spec.points3.size(); ++i) {
+            const Point3& q = spec.points3[i];
+            pts << (i ? ", " : "") << '(' << q.x << ", " << q.y << ", " << q.z << ')';
         }
         pictures.paragraph(spec.description + ". Points: " + pts.str() + ".");
         // One picture per distinct thing to see. A kernel with no wrong cell would draw the
@@ -376,7 +462,7 @@ FailureMapStudy run_failure_map_study(const FailureMapOptions& options, const Ru
                 pictures.paragraph(m.kernel + ": no wrong sign; its map is the exact one, the middle panel of " +
                                    row.png + ".");
             }
-            study.table.rows.push_back({spec.name, m.kernel, std::string(predicate_name(spec.formulation)),
+            study.table.rows.push_back({spec.name, m.kernel, std::string(spec.predicate()),
                                         std::to_string(row.cells), counts_text(m.counts),
                                         counts_text(m.exact_counts), std::to_string(m.wrong),
                                         format_rate(m.wrong, row.cells)});

@@ -34,23 +34,37 @@ namespace exidel::research {
 // failure-map
 
 /// One failure-map configuration: the points of one query, the point that moves, and
-/// the order in which the points are passed to the predicate.
+/// the order in which the points are passed to the predicate. A map of a predicate of
+/// the plane uses `formulation` and `points`; a map of a predicate of space sets `space`
+/// and uses `points3`, and its moving point moves in the plane of its two coordinates
+/// `axes` (0: x, 1: y, 2: z), the third one keeping its value.
 struct FailureMapSpec {
     std::string name;                 ///< preset name, or "custom"
     std::string description;
     Formulation formulation = Formulation::orient2d;
-    std::vector<Point2> points;       ///< point_count(formulation) points
-    std::size_t pivot = 0;            ///< index into points of the point that moves
+    std::vector<Point2> points;       ///< point_count(formulation) points (plane maps)
+    std::optional<SpacePredicate> space;  ///< set: a map of orient3d or insphere
+    std::vector<Point3> points3;      ///< point_count(*space) points (space maps)
+    std::array<int, 2> axes{0, 1};    ///< the moving point's coordinates on the map's x and y (space maps)
+    std::size_t pivot = 0;            ///< index into the points of the point that moves
     std::vector<std::size_t> order;   ///< argument i of the predicate is points[order[i]]
     int width = 256, height = 256;
     std::int64_t step = 1;            ///< ulps per cell
     bool centered = false;            ///< window [-W/2, W/2) instead of [0, W)
+
+    std::string_view predicate() const { return space ? predicate_name(*space) : predicate_name(formulation); }
+    std::size_t arity() const { return space ? point_count(*space) : point_count(formulation); }
 };
 
 /// The built-in configurations: kettner1..3 (docs/background.md section 4, the paper's p moved, the
 /// formula pivoting on p), kettner1-pivot-q and -r (the same points with q or r first),
 /// and circle/cosine configurations of four exactly cocircular points (a lattice circle
-/// of radius 5 scaled by 2^-s around (1, 1), s = 2, 12, 24), d moved around its place.
+/// of radius 5 scaled by 2^-s around (2, 2), s = 2, 12, 24), d moved around its place.
+/// In space: orient3d of four exactly coplanar points (on the plane x = y, Kettner's first
+/// line lifted, and on the tilted plane x + y + z = 3/2), the point the formula subtracts
+/// moved in x and y, or the first one; insphere of five exactly cospherical points (a
+/// lattice sphere of radius 3 scaled by 2^-s around (2, 2, 2), s = 2, 12, 24), e moved
+/// around its place in x and y, or a.
 std::vector<FailureMapSpec> failure_map_presets();
 /// Throws std::invalid_argument naming the presets when `name` is not one.
 FailureMapSpec failure_map_preset(std::string_view name);
