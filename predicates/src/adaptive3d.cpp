@@ -27,6 +27,11 @@ using detail::filter_decides;
 using detail::dw::Word;
 namespace eb = bounds;
 
+// The points go by reference between the stages: by value, every call out of line copied
+// them (twelve or fifteen doubles) to the stack, about a sixth of a slow call's time
+// (measured with bench/predicates3d_bench.cpp).
+using P3 = const Point3&;
+
 // proofs/bounds.md#expansion-range: with every |coordinate| < 2^(max_log + 1) no
 // intermediate of the formula overflows.
 constexpr int orient3d_max_log = 330;  // degree 3: 6 terms of (2^(E+2))^3 < 2^1023
@@ -50,7 +55,7 @@ inline double filter_bound(double first, double underflow, double spread) {
 
 /// Stage A: formulas.hpp's orient3d_of_differences, operation for operation, against
 /// o3d_a times the permanent (constants.hpp). `v` gets the nine rounded differences.
-inline bool orient3d_filter(Point3 a, Point3 b, Point3 c, Point3 d, double (&v)[9], Sign& sign) {
+inline bool orient3d_filter(P3 a, P3 b, P3 c, P3 d, double (&v)[9], Sign& sign) {
     v[0] = a.x - d.x, v[1] = a.y - d.y, v[2] = a.z - d.z;
     v[3] = b.x - d.x, v[4] = b.y - d.y, v[5] = b.z - d.z;
     v[6] = c.x - d.x, v[7] = c.y - d.y, v[8] = c.z - d.z;
@@ -92,7 +97,7 @@ template <bool Fma>
 }
 #endif
 
-[[gnu::noinline]] bool orient3d_double_word(Point3 a, Point3 b, Point3 c, Point3 d,
+[[gnu::noinline]] bool orient3d_double_word(P3 a, P3 b, P3 c, P3 d,
                                             Sign& sign) {
     using detail::dw::two_sum;
     const Word w[9] = {two_sum(a.x, -d.x), two_sum(a.y, -d.y), two_sum(a.z, -d.z),
@@ -111,7 +116,7 @@ template <bool Fma>
 
 /// Every difference exact and all in a window of 30 bits: the determinant in 64/128-bit
 /// integers (small_integers.hpp).
-[[gnu::noinline]] bool orient3d_small_integers(Point3 a, Point3 b, Point3 c, Point3 d,
+[[gnu::noinline]] bool orient3d_small_integers(P3 a, P3 b, P3 c, P3 d,
                                                const double (&v)[9], Sign& sign) {
     std::int64_t n[9];
     if (!detail::exact_small_differences({a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z},
@@ -122,7 +127,7 @@ template <bool Fma>
     return true;
 }
 
-[[gnu::noinline]] Sign orient3d_adapt(Point3 a, Point3 b, Point3 c, Point3 d,
+[[gnu::noinline]] Sign orient3d_adapt(P3 a, P3 b, P3 c, P3 d,
                                       const double (&v)[9], AdaptiveStage& stage) {
     stage = AdaptiveStage::small_integer;
     if (same_point(a, b) || same_point(a, c) || same_point(a, d) || same_point(b, c) ||
@@ -148,7 +153,7 @@ template <bool Fma>
     return detail::orient3d_formula<detail::Expansion>(a, b, c, d, lift_expansion);
 }
 
-inline Sign orient3d_impl(Point3 a, Point3 b, Point3 c, Point3 d, AdaptiveStage* stage) {
+inline Sign orient3d_impl(P3 a, P3 b, P3 c, P3 d, AdaptiveStage* stage) {
     *stage = AdaptiveStage::filter;
     double v[9];
     if (Sign s; orient3d_filter(a, b, c, d, v, s)) [[likely]]
@@ -159,7 +164,7 @@ inline Sign orient3d_impl(Point3 a, Point3 b, Point3 c, Point3 d, AdaptiveStage*
 // ---- insphere ---------------------------------------------------------------------------
 
 /// The twelve rounded differences every stage of insphere starts from.
-inline void insphere_differences(Point3 a, Point3 b, Point3 c, Point3 d, Point3 e,
+inline void insphere_differences(P3 a, P3 b, P3 c, P3 d, P3 e,
                                  double (&v)[12]) {
     v[0] = a.x - e.x, v[1] = a.y - e.y, v[2] = a.z - e.z;
     v[3] = b.x - e.x, v[4] = b.y - e.y, v[5] = b.z - e.z;
@@ -172,11 +177,11 @@ inline void insphere_differences(Point3 a, Point3 b, Point3 c, Point3 d, Point3 
 /// isp_static_max] (constants.hpp). True when it decides. (The later stages compute the
 /// differences again: keeping them for the rare slow path costs twelve stores on the
 /// fast one.)
-inline bool insphere_filter(Point3 a, Point3 b, Point3 c, Point3 d, Point3 e, Sign& sign) {
+inline bool insphere_filter(P3 a, P3 b, P3 c, P3 d, P3 e, Sign& sign) {
     double v[12];
     insphere_differences(a, b, c, d, e, v);
-    double m[2] = {0, 0};  // two running maxima: half the dependency chain of one
-    for (int i = 0; i < 12; ++i) m[i % 2] = std::max(m[i % 2], std::fabs(v[i]));
+    double m[2] = {std::fabs(v[0]), std::fabs(v[1])};  // two running maxima: half the chain
+    for (int i = 2; i < 12; ++i) m[i % 2] = std::max(m[i % 2], std::fabs(v[i]));
     const double mm = std::max(m[0], m[1]);
     const double det = detail::insphere_of_differences<double>(
         {v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9], v[10], v[11]});
@@ -275,7 +280,7 @@ template <bool Fma>
 }
 #endif
 
-[[gnu::noinline]] bool insphere_double_word(Point3 a, Point3 b, Point3 c, Point3 d, Point3 e,
+[[gnu::noinline]] bool insphere_double_word(P3 a, P3 b, P3 c, P3 d, P3 e,
                                             Sign& sign) {
     using detail::dw::two_sum;
     const Word w[12] = {two_sum(a.x, -e.x), two_sum(a.y, -e.y), two_sum(a.z, -e.z),
@@ -295,8 +300,8 @@ template <bool Fma>
 
 /// Every difference exact and all in a window of 24 bits: the determinant in 64/128-bit
 /// integers (small_integers.hpp).
-[[gnu::noinline]] bool insphere_small_integers(Point3 a, Point3 b, Point3 c, Point3 d,
-                                               Point3 e, const double (&v)[12], Sign& sign) {
+[[gnu::noinline]] bool insphere_small_integers(P3 a, P3 b, P3 c, P3 d,
+                                               P3 e, const double (&v)[12], Sign& sign) {
     std::int64_t n[12];
     if (!detail::exact_small_differences<detail::insphere_bits>(
             {a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z},
@@ -307,7 +312,7 @@ template <bool Fma>
     return true;
 }
 
-[[gnu::noinline]] Sign insphere_adapt(Point3 a, Point3 b, Point3 c, Point3 d, Point3 e,
+[[gnu::noinline]] Sign insphere_adapt(P3 a, P3 b, P3 c, P3 d, P3 e,
                                       const double (&v)[12], AdaptiveStage& stage) {
     // Two equal points make two equal rows of the lifted 5 x 5 determinant: zero.
     stage = AdaptiveStage::small_integer;
@@ -339,7 +344,7 @@ template <bool Fma>
 
 /// Stage A, then the exact stages. Out of line, so the semi-static fast path keeps few
 /// values live.
-[[gnu::noinline]] Sign insphere_after_filter(Point3 a, Point3 b, Point3 c, Point3 d, Point3 e,
+[[gnu::noinline]] Sign insphere_after_filter(P3 a, P3 b, P3 c, P3 d, P3 e,
                                              AdaptiveStage& stage) {
     double v[12];
     insphere_differences(a, b, c, d, e, v);
@@ -347,8 +352,7 @@ template <bool Fma>
     return insphere_adapt(a, b, c, d, e, v, stage);
 }
 
-inline Sign insphere_impl(Point3 a, Point3 b, Point3 c, Point3 d, Point3 e,
-                          AdaptiveStage* stage) {
+inline Sign insphere_impl(P3 a, P3 b, P3 c, P3 d, P3 e, AdaptiveStage* stage) {
     *stage = AdaptiveStage::filter;
     if (Sign s; insphere_filter(a, b, c, d, e, s)) [[likely]]
         return s;

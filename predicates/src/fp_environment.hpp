@@ -55,8 +55,11 @@ template <auto Impl, class... Args>
     return Impl(args...);
 }
 
+// The arguments are forwarded by reference: by value, the compiler copied the fifteen
+// coordinates of insphere's points from the caller's argument area to a frame of its own
+// before the filter read them.
 template <auto Impl, class... Args>
-inline Sign in_standard_environment(Args... args) {
+inline Sign in_standard_environment(const Args&... args) {
     if (environment_is_standard()) [[likely]]
         return Impl(args...);
     const StandardEnvironment guard;
