@@ -369,14 +369,16 @@ Sign insphere_staged(Point3 a, Point3 b, Point3 c, Point3 d, Point3 e, AdaptiveS
     return detail::in_standard_environment<insphere_impl>(a, b, c, d, e, &stage);
 }
 
+// Not through the *_staged functions: their by-value parameters, inlined here, were
+// copied to a frame of their own (fifteen doubles for insphere) before the filter ran.
 Sign AdaptiveKernel::orient3d(Point3 a, Point3 b, Point3 c, Point3 d) {
     AdaptiveStage stage;
-    return orient3d_staged(a, b, c, d, stage);
+    return detail::in_standard_environment<orient3d_impl>(a, b, c, d, &stage);
 }
 
 Sign AdaptiveKernel::insphere(Point3 a, Point3 b, Point3 c, Point3 d, Point3 e) {
     AdaptiveStage stage;
-    return insphere_staged(a, b, c, d, e, stage);
+    return detail::in_standard_environment<insphere_impl>(a, b, c, d, e, &stage);
 }
 
 }  // namespace exidel
