@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""A/B timing of two builds of exidel_bench_triangulation, interleaved runs.
+"""A/B timing of two builds of a benchmark binary (exidel_bench_triangulation,
+exidel_bench_predicates, exidel_bench_predicates3d), interleaved runs.
 
 usage: ab.py OLD_BINARY NEW_BINARY --filter REGEX --rounds R [--out results.json]
                    [--threshold 1.03] [-- EXTRA_BENCHMARK_ARGS...]
@@ -87,11 +88,14 @@ def run_once(binary, flt, extra):
 
 
 def cgal_name(name):
-    """tri/<input>/<n>/<impl>[/...] -> the same with impl = cgal-epick (None if not that form)."""
+    """The same benchmark with impl = cgal-epick: tri/<input>/<n>/<impl>[/...] (the
+    triangulation benchmark) or <predicate>/<input>/<impl> (the predicate benchmarks);
+    None for another form or for CGAL itself."""
     parts = name.split("/")
-    if len(parts) < 4 or parts[0] != "tri" or parts[3] == "cgal-epick":
+    at = 3 if parts[0] == "tri" else 2
+    if len(parts) <= at or (parts[0] != "tri" and len(parts) != 3) or parts[at] == "cgal-epick":
         return None
-    parts[3] = "cgal-epick"
+    parts[at] = "cgal-epick"
     return "/".join(parts)
 
 

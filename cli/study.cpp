@@ -1,6 +1,5 @@
 // exidel CLI: `exidel study`, the research instruments of lib/research. Thin: parse the
 // options, call one study, print its table and where the report is.
-#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstdio>
@@ -155,9 +154,6 @@ std::vector<std::vector<double>> parse_points(std::string_view text, std::size_t
     return out;
 }
 
-/// The predicates a failure map can draw.
-constexpr std::string_view map_predicates[] = {"orient2d", "incircle", "incircle_cosine", "orient3d", "insphere"};
-
 /// "xy", "xz", "zy", ...: two different coordinate axes.
 std::array<int, 2> parse_axes(std::string_view text) {
     const auto axis = [](char c) { return c == 'x' ? 0 : c == 'y' ? 1 : c == 'z' ? 2 : -1; };
@@ -249,12 +245,12 @@ research::FailureMapOptions failure_map_options(const Parsed& p) {
             if (p.axes) s.axes = parse_axes(*p.axes);
         } else {
             if (p.axes) throw std::invalid_argument("--axes is for orient3d and insphere maps");
-            const std::string_view* known = std::find(std::begin(map_predicates), std::end(map_predicates), *p.predicate);
-            if (known == std::end(map_predicates)) {
+            try {
+                s.formulation = research::formulation_from_name(*p.predicate);
+            } catch (const std::invalid_argument&) {  // its message names the plane's three only
                 throw std::invalid_argument("--predicate must be orient2d|incircle|incircle_cosine|orient3d|insphere, got '" +
                                             *p.predicate + "'");
             }
-            s.formulation = research::formulation_from_name(*p.predicate);
             for (const std::vector<double>& c : parse_points(*p.points, 2)) s.points.push_back({c[0], c[1]});
         }
         const std::size_t last = s.arity() - 1;

@@ -171,12 +171,11 @@ void validate(const FailureMapSpec& s) {
         throw std::invalid_argument(std::string(s.predicate()) + " needs " + std::to_string(n) +
                                     " points, got " + std::to_string(given));
     }
-    const auto finite = [](double v) { return std::isfinite(v); };
     for (const Point2& p : s.points) {
-        if (!finite(p.x) || !finite(p.y)) throw std::invalid_argument("failure map points must be finite");
+        if (!std::isfinite(p.x) || !std::isfinite(p.y)) throw std::invalid_argument("failure map points must be finite");
     }
     for (const Point3& p : s.points3) {
-        if (!finite(p.x) || !finite(p.y) || !finite(p.z)) {
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
             throw std::invalid_argument("failure map points must be finite");
         }
     }
