@@ -26,8 +26,9 @@
 //   bytes_per_pt  the peak of live heap bytes during one run minus those live before it,
 //                 over n. Counted by replacing global operator new/delete in this program
 //                 with atomic counters (so worker threads are counted too), using
-//                 malloc_usable_size of each block, so allocator rounding is included.
-//                 Not seen: GMP's own malloc calls (exact kernel) and thread stacks. The
+//                 malloc_usable_size of each block, so allocator rounding is included,
+//                 plus the mappings exidel makes itself for its large internal arrays
+//                 (whole 2 MiB pages; detail::set_mapped_fresh_hook). Not seen: GMP's own malloc calls (exact kernel) and thread stacks. The
 //                 input vector exists before the run and is not counted.
 // Every benchmark run starts from the same allocator state: malloc_trim(0) before the
 // timed loop returns every free page of the heap to the kernel. Without it a run inherits
@@ -105,7 +106,14 @@
 // Heap accounting: every operator new/delete of the program goes through here.
 namespace {
 std::atomic<std::size_t> live_bytes{0};
+std::atomic<std::size_t> mapped_bytes{0};  // exidel's own mappings (detail/memory.hpp)
 std::atomic<std::size_t> peak_bytes{0};
+
+void raise_peak(std::size_t now) {
+    std::size_t peak = peak_bytes.load(std::memory_order_relaxed);
+    while (now > peak && !peak_bytes.compare_exchange_weak(peak, now, std::memory_order_relaxed)) {
+    }
+}
 
 void* counted_alloc(std::size_t size) {
     void* p = std::malloc(size == 0 ? 1 : size);
@@ -113,10 +121,14 @@ void* counted_alloc(std::size_t size) {
     const std::size_t now =
         live_bytes.fetch_add(malloc_usable_size(p), std::memory_order_relaxed) +
         malloc_usable_size(p);
-    std::size_t peak = peak_bytes.load(std::memory_order_relaxed);
-    while (now > peak && !peak_bytes.compare_exchange_weak(peak, now, std::memory_order_relaxed)) {
-    }
+    raise_peak(now + mapped_bytes.load(std::memory_order_relaxed));
     return p;
+}
+
+// exidel maps its large internal arrays itself, past operator new: counted here.
+void count_mapped(std::size_t total) {
+    mapped_bytes.store(total, std::memory_order_relaxed);
+    raise_peak(total + live_bytes.load(std::memory_order_relaxed));
 }
 
 void counted_free(void* p) noexcept {
@@ -143,7 +155,7 @@ using CgalDelaunay = CGAL::Delaunay_triangulation_2<Epick>;
 // Extra heap bytes at the peak of f(), over those live when it started.
 template <class F>
 std::size_t peak_extra_bytes(F&& f) {
-    const std::size_t before = live_bytes.load();
+    const std::size_t before = live_bytes.load() + mapped_bytes.load();
     peak_bytes.store(before);
     f();
     return peak_bytes.load() - before;
@@ -374,6 +386,7 @@ void add(const std::string& in_name, std::size_t n, bool lexicographic, bool rad
 }  // namespace
 
 int main(int argc, char** argv) {
+    delaunay::detail::set_mapped_fresh_hook(count_mapped);
     benchmark::Initialize(&argc, argv);
     bool slow = false, huge = false, giant = false;
     for (int i = 1; i < argc; ++i) {

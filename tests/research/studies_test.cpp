@@ -163,7 +163,9 @@ TEST(FailureMap, SpaceMapAxesSwapTransposesTheMap) {
     const FailureMap z = compute_failure_map(xz, GmpExactKernel{}, 2);
     for (std::size_t j = 0; j < 40; ++j) {
         for (std::size_t i = 0; i < 40; ++i) {
-            if (i != 20) ASSERT_EQ(z.exact[j * 40 + i], z.exact[i]) << i << ", " << j;
+            if (i != 20) {
+                ASSERT_EQ(z.exact[j * 40 + i], z.exact[i]) << i << ", " << j;
+            }
         }
     }
     EXPECT_EQ(z.exact_counts.zero, 1u);

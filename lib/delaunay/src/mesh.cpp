@@ -32,7 +32,7 @@ std::optional<Failure> to_triangulation(Mesh& mesh, std::span<const std::uint32_
     });
     for (std::size_t c = 0; c < chunks; ++c) base[c + 1] += base[c];
     const std::size_t live = base[chunks];
-    std::vector<std::uint32_t> new_slot;
+    FreshVector<std::uint32_t> new_slot;
     resize_fresh(new_slot, slots);
     parallel_for(chunks, threads, [&](std::size_t c) {
         auto u = static_cast<std::uint32_t>(base[c]);

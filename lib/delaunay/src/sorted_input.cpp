@@ -199,7 +199,7 @@ std::optional<Failure> sort_and_dedupe(std::span<const Point2> input, SortedInpu
         std::clamp<std::size_t>(std::bit_ceil(std::max<std::size_t>(n / 8, 1)), 1,
                                 std::size_t{1} << (2 * digit_bits)));
     const Buckets bucket_of(lo, hi, buckets);
-    auto memory = allocate_fresh<Record>(n), spare = std::unique_ptr<Record[]>();
+    FreshBuffer<Record> memory(n), spare;
     std::span<Record> records(memory.get(), n);
     parallel_for(chunks, threads, [&](std::size_t c) {
         for (std::size_t i = c * chunk; i < chunk_end(c); ++i) {
@@ -208,7 +208,7 @@ std::optional<Failure> sort_and_dedupe(std::span<const Point2> input, SortedInpu
         }
     });
     if (buckets > 1) {
-        spare = allocate_fresh<Record>(n);
+        spare = FreshBuffer<Record>(n);
         std::span<Record> to(spare.get(), n);
         for (unsigned shift = 0; (std::size_t{1} << shift) < buckets; shift += digit_bits) {
             if (radix_pass(records, to, shift, chunk, threads)) std::swap(records, to);

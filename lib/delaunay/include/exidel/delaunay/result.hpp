@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "exidel/delaunay/algorithms.hpp"
+#include "exidel/delaunay/detail/memory.hpp"
 #include "exidel/predicates/types.hpp"
 
 namespace exidel::delaunay {
@@ -191,8 +192,8 @@ namespace detail {
 
 /// Points sorted lexicographically (x, then y) with exact duplicates removed.
 struct SortedInput {
-    std::vector<Point2> points;              ///< distinct, increasing
-    std::vector<std::uint32_t> input_of;     ///< sorted position -> input index (first occurrence)
+    FreshVector<Point2> points;              ///< distinct, increasing
+    FreshVector<std::uint32_t> input_of;     ///< sorted position -> input index (first occurrence)
     std::vector<std::uint32_t> vertex_of_input;
     std::vector<std::uint32_t> duplicates;
 };

@@ -56,7 +56,7 @@ Result run_algorithm(const K& kernel, SortedInput& in, const Options& options) {
     if (!result.failure) {
         if (out.mesh.collinear) {
             tri.collinear = true;
-            tri.hull = in.input_of;  // the chain, lexicographically
+            tri.hull.assign(in.input_of.begin(), in.input_of.end());  // the chain, lexicographically
         } else {
             result.failure = to_triangulation(
                 out.mesh, out.input_of.empty() ? std::span<const std::uint32_t>(in.input_of)
@@ -66,6 +66,13 @@ Result run_algorithm(const K& kernel, SortedInput& in, const Options& options) {
     }
     tri.vertex_of_input = std::move(in.vertex_of_input);
     tri.duplicates = std::move(in.duplicates);
+    // The arrays leave the library (or, after a failure, are freed here): their huge-page
+    // advice must not outlive them (detail/memory.hpp).
+    settle_huge_pages(tri.triangles);
+    settle_huge_pages(tri.halfedges);
+    settle_huge_pages(tri.vertex_of_input);
+    settle_huge_pages(out.mesh.triangles);
+    settle_huge_pages(out.mesh.halfedges);
     return result;
 }
 

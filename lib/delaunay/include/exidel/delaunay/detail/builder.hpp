@@ -89,7 +89,7 @@ public:
                 break;
             }
         }
-        mesh = Mesh{};
+        mesh.clear();
         if (first_off == n) {
             mesh.collinear = true;
             return std::nullopt;
@@ -323,18 +323,27 @@ struct RadialIds {
     std::vector<std::uint32_t> order, input_of;
 };
 
+/// Working memory of build_radial, kept by callers that run it many times (the strips:
+/// allocating a strip's arrays afresh each time costs a page fault per 4 KiB of them,
+/// whenever malloc serves them from mappings of their own).
+struct RadialWorkspace {
+    RadialScratch sort;
+    std::vector<Point2> local;  // the points in radial order
+};
+
 /// One external incremental run in radial order over `points` (sorted, distinct, not
 /// empty): about their radial centre, exact distance order, the collinear prefix sorted
 /// back into position order. `input_of` maps positions to input indices. Counters are
-/// added to `counters`.
+/// added to `counters`. `ids`, `mesh` and `work` keep their memory for the next run.
 template <PredicateKernel K, Instrumentation I, InCirclePolicy P, Repair R = Repair::erode>
 std::optional<Failure> build_radial(const K& kernel, std::span<const Point2> points,
                                     std::span<const std::uint32_t> input_of, RadialIds& ids,
-                                    Mesh& mesh, Counters& counters) {
+                                    Mesh& mesh, Counters& counters, RadialWorkspace& work) {
     const Point2 centre = radial_centre(points);
-    ids.order = radial_order(points, centre, kernel);
+    radial_order(points, centre, kernel, work.sort, ids.order);
     sort_collinear_prefix(points, std::span<std::uint32_t>(ids.order), kernel);
-    std::vector<Point2> local(ids.order.size());
+    std::vector<Point2>& local = work.local;
+    local.resize(ids.order.size());
     ids.input_of.resize(ids.order.size());
     for (std::size_t j = 0; j < ids.order.size(); ++j) {
         local[j] = points[ids.order[j]];
@@ -345,6 +354,14 @@ std::optional<Failure> build_radial(const K& kernel, std::span<const Point2> poi
     auto failure = builder.run(mesh);
     counters += builder.counters();
     return failure;
+}
+
+template <PredicateKernel K, Instrumentation I, InCirclePolicy P, Repair R = Repair::erode>
+std::optional<Failure> build_radial(const K& kernel, std::span<const Point2> points,
+                                    std::span<const std::uint32_t> input_of, RadialIds& ids,
+                                    Mesh& mesh, Counters& counters) {
+    RadialWorkspace work;
+    return build_radial<K, I, P, R>(kernel, points, input_of, ids, mesh, counters, work);
 }
 
 /// One radial run over the whole sorted input, written as an algorithm's output: the mesh

@@ -180,7 +180,8 @@ private:
     std::optional<Failure> solve(std::uint32_t lo, std::uint32_t hi, bool horizontal,
                                  Piece& piece) {
         if (cuts_[next_++] == 0) {
-            return build_piece<K, I, P>(k_, pts_, input_of_, lo, hi, mesh_, piece, leaf_counters_);
+            return build_piece<K, I, P>(k_, pts_, input_of_, lo, hi, mesh_, piece, leaf_counters_,
+                                        leaf_work_);
         }
         const std::uint32_t mid = cut_at(lo, hi);
         std::uint32_t l0 = mid - 1, r0 = mid;  // vertical cuts: the array stays sorted
@@ -201,6 +202,7 @@ private:
     Mesh& mesh_;
     Merger<K, I> merger_;
     Counters leaf_counters_{};
+    PieceWorkspace leaf_work_;  // reused by every leaf
     std::vector<std::uint8_t> cuts_;                               // the plan, pre-order
     std::vector<std::pair<std::uint32_t, std::uint32_t>> ends_;    // dwyer: start points
     std::vector<std::uint32_t> position_of_;                       // dwyer: input -> position
@@ -214,8 +216,8 @@ struct DivideAndConquerAlgorithm {
                     Result& result) {
         // The recursion permutes its own copy (dwyer); the input_of of each position is
         // permuted along, and the copy's order is the sorted positions' at first.
-        std::vector<Point2> points = in.points;
-        std::vector<std::uint32_t> input_of = in.input_of;
+        std::vector<Point2> points(in.points.begin(), in.points.end());
+        std::vector<std::uint32_t> input_of(in.input_of.begin(), in.input_of.end());
         if constexpr (Alternate) {
             // Track where sorted position 0 (the smallest point) ends up through its
             // input index, which no other position shares.

@@ -79,13 +79,15 @@ public:
         }
         angle_scale_ = hi > angle_lo_ ? static_cast<double>(hash_.size()) / (hi - angle_lo_) : 0;
         if (!std::isfinite(angle_scale_)) angle_scale_ = 0;
+        // Every point's bucket here, in a loop of independent divisions, rather than one
+        // at each insertion, where the division waits on the walk before it.
+        for (std::size_t v = 0; v < pts.size(); ++v) {
+            bucket_[v] = static_cast<std::uint32_t>(hash_key(pts[v]));
+        }
     }
 
-    void seeded(std::span<const Point2> pts, std::uint32_t apex) {
-        for (std::uint32_t v = 0; v <= apex; ++v) {
-            bucket_[v] = static_cast<std::uint32_t>(hash_key(pts[v]));
-            hash_[bucket_[v]] = v;
-        }
+    void seeded(std::span<const Point2>, std::uint32_t apex) {
+        for (std::uint32_t v = 0; v <= apex; ++v) hash_[bucket_[v]] = v;
     }
 
     // A hull vertex e whose edge e -> next(e) p sees strictly. The hash gives a live hull
@@ -97,9 +99,8 @@ public:
     // same bucket). With an inexact kernel the walk may pass every edge without finding
     // one, and that is reported, not guessed.
     template <class Sees>
-    std::optional<Start> start(Point2 p, std::uint32_t i, std::uint32_t, const Mesh& mesh,
+    std::optional<Start> start(Point2, std::uint32_t i, std::uint32_t, const Mesh& mesh,
                                Sees&& sees) {
-        bucket_[i] = static_cast<std::uint32_t>(hash_key(p));
         const auto e = visible_edge(bucket_[i], mesh, sees);
         if (!e) return std::nullopt;
         return Start{*e, mesh.hull_next[*e], 1};  // the edge e -> next(e): already tested
@@ -173,7 +174,7 @@ private:
 
     Point2 centre_;
     std::vector<std::uint32_t> hash_;    // bucket -> a hull vertex (or dead)
-    std::vector<std::uint32_t> bucket_;  // inserted vertex -> its bucket
+    std::vector<std::uint32_t> bucket_;  // vertex -> its bucket
     double axis_x_ = 1, axis_y_ = 0;     // the direction the hash angle starts from
     double angle_lo_ = 0, angle_scale_ = 0;
 };

@@ -22,6 +22,7 @@
 #include <span>
 #include <vector>
 
+#include "exidel/delaunay/detail/memory.hpp"
 #include "exidel/delaunay/result.hpp"
 
 namespace exidel::delaunay::detail {
@@ -32,21 +33,37 @@ inline constexpr std::uint32_t dead = 0xffffffffu;
 struct Mesh {
     std::vector<std::uint32_t> triangles;
     std::vector<std::int32_t> halfedges;
-    std::vector<std::uint32_t> hull_next, hull_prev;  // the hull as a linked cycle
-    std::vector<std::int32_t> hull_edge;  // v -> the half-edge v -> hull_next[v]
+    // Internal arrays, in fresh memory (memory.hpp); triangles and halfedges become the
+    // Triangulation's.
+    FreshVector<std::uint32_t> hull_next, hull_prev;  // the hull as a linked cycle
+    FreshVector<std::int32_t> hull_edge;  // v -> the half-edge v -> hull_next[v]
     std::size_t hull_size = 0;
     bool collinear = false;               // no triangle: every point on one line
     std::vector<std::uint32_t> free;      // slots of deleted triangles, reused first (LIFO)
 
     /// Empties the mesh and sizes the hull arrays for `vertices` ids, with room for the
     /// 2 vertices - 5 triangles (plus a margin for deleted slots) of a triangulation.
+    /// Keeps the arrays' memory, so a mesh reused run after run (the strips') allocates
+    /// once.
     void reset(std::size_t vertices) {
-        *this = Mesh{};
+        clear();
         hull_next.assign(vertices, 0);
         hull_prev.assign(vertices, 0);
         hull_edge.assign(vertices, -1);
         triangles.reserve(6 * vertices);
         halfedges.reserve(6 * vertices);
+    }
+
+    /// An empty mesh (no triangle, not collinear), keeping the arrays' memory.
+    void clear() noexcept {
+        triangles.clear();
+        halfedges.clear();
+        hull_next.clear();
+        hull_prev.clear();
+        hull_edge.clear();
+        hull_size = 0;
+        collinear = false;
+        free.clear();
     }
 
     /// Triangles in use (slots minus free slots).

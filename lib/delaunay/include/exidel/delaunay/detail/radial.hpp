@@ -166,24 +166,35 @@ bool guess_order(std::span<Keyed> run, std::span<const Point2> points, Point2 ce
     return true;
 }
 
-/// Positions of `points` in ascending distance from `centre`, ties by position.
-template <PredicateKernel K>
-std::vector<std::uint32_t> radial_order(std::span<const Point2> points, Point2 centre,
-                                        const K& kernel) {
-    // Sorted by the key's bits, which order non-negative doubles (+inf included) as
-    // numbers; the radix sort is stable, so equal keys stay in position order.
+/// radial_order's working arrays, kept by callers that order many point sets (the strips).
+struct RadialScratch {
     struct Keyed {
         double d;
         std::uint32_t i;
     };
-    std::vector<KeyIndex> by_key(points.size());
+    std::vector<KeyIndex> by_key;
+    FreshVector<KeyIndex> radix_buffer;
+    std::vector<Keyed> keyed;
+};
+
+/// Positions of `points` in ascending distance from `centre`, ties by position, into
+/// `order`; `scratch` is working memory.
+template <PredicateKernel K>
+void radial_order(std::span<const Point2> points, Point2 centre, const K& kernel,
+                  RadialScratch& scratch, std::vector<std::uint32_t>& order) {
+    // Sorted by the key's bits, which order non-negative doubles (+inf included) as
+    // numbers; the radix sort is stable, so equal keys stay in position order.
+    using Keyed = RadialScratch::Keyed;
+    std::vector<KeyIndex>& by_key = scratch.by_key;
+    by_key.resize(points.size());
     for (std::size_t i = 0; i < points.size(); ++i) {
         const double dx = points[i].x - centre.x, dy = points[i].y - centre.y;
         // May be +inf (overflow), never NaN (the coordinates are finite) nor negative.
         by_key[i] = {std::bit_cast<std::uint64_t>(dx * dx + dy * dy), static_cast<std::uint32_t>(i)};
     }
-    radix_sort(by_key);
-    std::vector<Keyed> keyed(points.size());
+    radix_sort(by_key, scratch.radix_buffer);
+    std::vector<Keyed>& keyed = scratch.keyed;
+    keyed.resize(points.size());
     for (std::size_t j = 0; j < keyed.size(); ++j) {
         keyed[j] = {std::bit_cast<double>(by_key[j].key), by_key[j].index};
     }
@@ -220,8 +231,17 @@ std::vector<std::uint32_t> radial_order(std::span<const Point2> points, Point2 c
         }
         lo = hi;
     }
-    std::vector<std::uint32_t> order(points.size());
+    order.resize(points.size());
     for (std::size_t i = 0; i < keyed.size(); ++i) order[i] = keyed[i].i;
+}
+
+/// radial_order with working memory of its own.
+template <PredicateKernel K>
+std::vector<std::uint32_t> radial_order(std::span<const Point2> points, Point2 centre,
+                                        const K& kernel) {
+    RadialScratch scratch;
+    std::vector<std::uint32_t> order;
+    radial_order(points, centre, kernel, scratch, order);
     return order;
 }
 

@@ -36,7 +36,8 @@ constexpr std::uint64_t order_key(double v) noexcept {
 /// Sorts `v` by key, stably (equal keys keep their order). LSD radix sort with 11-bit
 /// digits; a pass whose digit is the same in every key is skipped (the exponent bits of
 /// points in a small box, the high bits of the distances in one strip).
-inline void radix_sort(std::vector<KeyIndex>& v) {
+/// `buffer` is scratch memory, reused by callers that sort many times.
+inline void radix_sort(std::vector<KeyIndex>& v, FreshVector<KeyIndex>& buffer) {
     if (v.size() < 256) {  // the histograms would cost more than the sort
         std::stable_sort(v.begin(), v.end(),
                          [](const KeyIndex& a, const KeyIndex& b) { return a.key < b.key; });
@@ -51,8 +52,7 @@ inline void radix_sort(std::vector<KeyIndex>& v) {
     for (const KeyIndex& r : v) {
         for (unsigned p = 0; p < passes; ++p) ++count[p][digit(r.key, p)];
     }
-    std::vector<KeyIndex> buffer;
-    resize_fresh(buffer, v.size());
+    buffer.resize(v.size());
     std::span<KeyIndex> from(v), to(buffer);
     for (unsigned p = 0; p < passes; ++p) {
         auto& c = count[p];
@@ -63,6 +63,11 @@ inline void radix_sort(std::vector<KeyIndex>& v) {
         std::swap(from, to);
     }
     if (from.data() != v.data()) std::copy(from.begin(), from.end(), v.begin());
+}
+
+inline void radix_sort(std::vector<KeyIndex>& v) {
+    FreshVector<KeyIndex> buffer;
+    radix_sort(v, buffer);
 }
 
 }  // namespace exidel::delaunay::detail

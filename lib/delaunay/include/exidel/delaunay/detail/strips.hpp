@@ -67,10 +67,18 @@ std::vector<std::uint32_t> strip_cuts(std::span<const Point2> pts, std::size_t t
 /// [2a, 2b) (a triangulation of b - a points has at most 2 (b - a) - 5 triangles). Three points are one triangle,
 /// written directly; more are triangulated in their own radial order (build_radial) and
 /// copied in. `piece` receives the range and its unused slots; counters go to `into`.
+/// `work` is working memory, reused from piece to piece.
+struct PieceWorkspace {
+    RadialIds ids;
+    Mesh part;
+    RadialWorkspace radial;
+};
+
 template <PredicateKernel K, Instrumentation I, InCirclePolicy P>
 std::optional<Failure> build_piece(const K& kernel, std::span<const Point2> pts,
                                    std::span<const std::uint32_t> input_of, std::uint32_t a,
-                                   std::uint32_t b, Mesh& mesh, Piece& piece, Counters& into) {
+                                   std::uint32_t b, Mesh& mesh, Piece& piece, Counters& into,
+                                   PieceWorkspace& work) {
     piece.first = a;
     piece.end = b;
     if (b - a == 3) {
@@ -89,10 +97,10 @@ std::optional<Failure> build_piece(const K& kernel, std::span<const Point2> pts,
         return std::nullopt;
     }
     const auto part_points = pts.subspan(a, b - a);
-    RadialIds ids;
-    Mesh part;
-    auto failure =
-        build_radial<K, I, P>(kernel, part_points, input_of.subspan(a, b - a), ids, part, into);
+    RadialIds& ids = work.ids;
+    Mesh& part = work.part;
+    auto failure = build_radial<K, I, P>(kernel, part_points, input_of.subspan(a, b - a), ids,
+                                         part, into, work.radial);
     if (failure) return failure;
     const std::vector<std::uint32_t>& order = ids.order;
     if (part.collinear) {
@@ -140,9 +148,9 @@ std::optional<Failure> build_strips(const K& kernel, std::span<const Point2> pts
     assign_fresh(mesh.hull_edge, n, -1);
     std::vector<Piece> pieces(strips);
 
-    auto build_strip = [&](std::size_t s, Counters& into) {
+    auto build_strip = [&](std::size_t s, Counters& into, PieceWorkspace& work) {
         return build_piece<K, I, P>(kernel, pts, input_of, cuts[s], cuts[s + 1], mesh, pieces[s],
-                                    into);
+                                    into, work);
     };
 
     auto merge = [&](std::size_t left, std::size_t right, Counters& into) {
@@ -168,8 +176,9 @@ std::optional<Failure> build_strips(const K& kernel, std::span<const Point2> pts
     std::vector<Counters> block_counters(blocks);
     parallel_for(blocks, threads, [&](std::size_t j) {
         Counters& into = block_counters[j];
+        PieceWorkspace work;  // one per block: its strips reuse the memory
         auto solve = [&](auto& self, std::size_t lo, std::size_t size) -> std::optional<Failure> {
-            if (size == 1) return build_strip(lo, into);
+            if (size == 1) return build_strip(lo, into, work);
             const std::size_t half = size / 2;
             if (auto failure = self(self, lo, half)) return failure;
             if (lo + half >= strips) return std::nullopt;
