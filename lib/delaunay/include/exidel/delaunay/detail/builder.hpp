@@ -333,7 +333,11 @@ struct RadialIds {
 /// whenever malloc serves them from mappings of their own).
 struct RadialWorkspace {
     RadialScratch sort;
-    std::vector<Point2> local;  // the points in radial order
+    FreshVector<Point2> local;  // the points in radial order
+    /// False: the sort's arrays are freed before the insertions start, as a one-off run
+    /// wants (at 10^6 points they are 48 MB, which would otherwise stay live through the
+    /// build and raise its peak).
+    bool keep_sort_memory = true;
 };
 
 /// One external incremental run in radial order over `points` (sorted, distinct, not
@@ -346,8 +350,9 @@ std::optional<Failure> build_radial(const K& kernel, std::span<const Point2> poi
                                     Mesh& mesh, Counters& counters, RadialWorkspace& work) {
     const Point2 centre = radial_centre(points);
     radial_order(points, centre, kernel, work.sort, ids.order);
+    if (!work.keep_sort_memory) work.sort = RadialScratch{};
     sort_collinear_prefix(points, std::span<std::uint32_t>(ids.order), kernel);
-    std::vector<Point2>& local = work.local;
+    FreshVector<Point2>& local = work.local;
     local.resize(ids.order.size());
     ids.input_of.resize(ids.order.size());
     for (std::size_t j = 0; j < ids.order.size(); ++j) {
@@ -366,6 +371,7 @@ std::optional<Failure> build_radial(const K& kernel, std::span<const Point2> poi
                                     std::span<const std::uint32_t> input_of, RadialIds& ids,
                                     Mesh& mesh, Counters& counters) {
     RadialWorkspace work;
+    work.keep_sort_memory = false;
     return build_radial<K, I, P, R>(kernel, points, input_of, ids, mesh, counters, work);
 }
 

@@ -37,7 +37,8 @@ constexpr std::uint64_t order_key(double v) noexcept {
 /// digits; a pass whose digit is the same in every key is skipped (the exponent bits of
 /// points in a small box, the high bits of the distances in one strip).
 /// `buffer` is scratch memory, reused by callers that sort many times.
-inline void radix_sort(std::vector<KeyIndex>& v, FreshVector<KeyIndex>& buffer) {
+template <class Keys>
+void radix_sort(Keys& v, FreshVector<KeyIndex>& buffer) {
     if (v.size() < 256) {  // the histograms would cost more than the sort
         std::stable_sort(v.begin(), v.end(),
                          [](const KeyIndex& a, const KeyIndex& b) { return a.key < b.key; });
@@ -65,7 +66,8 @@ inline void radix_sort(std::vector<KeyIndex>& v, FreshVector<KeyIndex>& buffer) 
     if (from.data() != v.data()) std::copy(from.begin(), from.end(), v.begin());
 }
 
-inline void radix_sort(std::vector<KeyIndex>& v) {
+template <class Keys>
+void radix_sort(Keys& v) {
     FreshVector<KeyIndex> buffer;
     radix_sort(v, buffer);
 }
