@@ -342,6 +342,10 @@ benchmark::internal::Benchmark* reg(const std::string& name, std::size_t n,
     return b;
 }
 
+// --exidel_strip_tiles=N: Options::strip_tiles of every exidel run (0, the default:
+// chosen by input size), to compare tile counts.
+std::size_t strip_tiles = 0;
+
 // The external algorithm is named by its order (adaptive-radial-t1, the names its
 // tables have always used); every other algorithm by its registry name.
 template <class K>
@@ -352,8 +356,10 @@ void add_exidel(const std::string& prefix, const std::string& kernel, const std:
                                  ? std::string(delaunay::to_string(strategy))
                                  : std::string(delaunay::to_string(algorithm));
     const std::string name = prefix + kernel + "-" + what + "-t" + std::to_string(threads);
-    const delaunay::Options options{
-        .strategy = strategy, .threads = threads, .algorithm = algorithm};
+    const delaunay::Options options{.strategy = strategy,
+                                    .threads = threads,
+                                    .algorithm = algorithm,
+                                    .strip_tiles = strip_tiles};
     reg(name, n, [=](benchmark::State& s) { exidel_bench<K>(s, name, in_name, n, options); });
 }
 
@@ -397,9 +403,12 @@ int main(int argc, char** argv) {
             huge = true;
         } else if (a == "--exidel_giant") {
             giant = true;
+        } else if (a.starts_with("--exidel_strip_tiles=")) {
+            strip_tiles = std::strtoull(a.substr(21).data(), nullptr, 10);
         } else {
             std::fprintf(stderr, "unknown option %s (besides Google Benchmark's: "
-                                 "--exidel_slow, --exidel_huge, --exidel_giant)\n", argv[i]);
+                                 "--exidel_slow, --exidel_huge, --exidel_giant, "
+                                 "--exidel_strip_tiles=N)\n", argv[i]);
             return 2;
         }
     }

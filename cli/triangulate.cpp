@@ -41,7 +41,8 @@ constexpr std::string_view triangulate_help_head =
                           [--incircle determinant|cosine] [--format json|ele|off|svg]
                           [--input-format xy|json|node|f64] [--columns X,Y]
                           [--order auto|lexicographic|radial|strips] [--threads N]
-                          [--strip-points N] [--certify] [--stats] [--quiet] [FILE]
+                          [--strip-points N] [--strip-tiles N] [--certify] [--stats]
+                          [--quiet] [FILE]
 
 Computes the Delaunay triangulation of a set of points, by default with the external
 incremental algorithm (Cai 2025): each point is added outside the hull of the previous
@@ -95,6 +96,9 @@ Options:
                           thread count)
       --strip-points N    points per strip (default: chosen by input size); strips
                           grow until their points are not all on one line
+      --strip-tiles N     cut each strip across into N tiles of --strip-points
+                          points (strips of N times as many); 1: plain strips;
+                          default: chosen by input size
   -f, --format FORMAT     json|ele|off|svg
       --input-format FMT  xy|json|node|f64
       --columns X,Y       xy input: the fields holding x and y, by number from 1
@@ -146,6 +150,7 @@ struct Options {
     delaunay::Strategy strategy = delaunay::Strategy::automatic;
     unsigned threads = std::max(1u, std::thread::hardware_concurrency());
     std::size_t strip_points = 0;
+    std::size_t strip_tiles = 0;
     std::optional<io::TriangulationFormat> format;
     bool certify = false;
     bool stats = false;
@@ -269,6 +274,7 @@ int run(const Options& o, const CommandLine& cli) {
     // the uninstrumented algorithm.
     progress.phase("triangulating " + std::to_string(points.size()) + " points");
     delaunay::Options options{o.incircle, o.strategy, o.threads, o.strip_points};
+    options.strip_tiles = o.strip_tiles;
     options.algorithm = o.algorithm;
     const Triangulated triangulated = triangulate_points(*kernel, points, options, o.stats);
     const delaunay::Result& result = triangulated.result;
@@ -370,6 +376,10 @@ int triangulate_command(std::span<const std::string_view> args) {
     add_parsed(app, "--strip-points",
                "a whole number from 1 to " + std::to_string(delaunay::detail::max_points),
                o.strip_points,
+               [](const std::string& v) { return whole_number(v, delaunay::detail::max_points); });
+    add_parsed(app, "--strip-tiles",
+               "a whole number from 1 to " + std::to_string(delaunay::detail::max_points),
+               o.strip_tiles,
                [](const std::string& v) { return whole_number(v, delaunay::detail::max_points); });
     add_parsed(app, "-f,--format", "json, ele, off or svg", o.format,
                io::triangulation_format_from_name);

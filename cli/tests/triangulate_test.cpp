@@ -89,7 +89,7 @@ TEST(ExidelTriangulate, BadOptionsExitTwoWithUsage) {
                              "--format png", "--input-format csv", "--frob", "a b", "-i a b",
                              "-o", "-o a.json -o b.json", "--order", "--order spiral",
                              "--threads 0", "--threads two", "--threads=3x", "--strip-points 0",
-                             "--strip-points -5"}) {
+                             "--strip-points -5", "--strip-tiles 0", "--strip-tiles three"}) {
         const RunResult r = run(args, "0 0\n1 0\n0 1\n");
         EXPECT_EQ(r.status, 2) << args;
         EXPECT_NE(r.err.find("usage: exidel triangulate"), std::string::npos) << args;
@@ -431,7 +431,9 @@ TEST(ExidelTriangulate, OrdersAndThreadsGiveTheSameTriangles) {
     std::string reference;
     for (const char* args : {"--order lexicographic", "--order radial",
                              "--order strips --strip-points 7 --threads 1",
-                             "--order strips --strip-points 7 --threads 2", "--order auto"}) {
+                             "--order strips --strip-points 7 --threads 2",
+                             "--order strips --strip-points 7 --strip-tiles 3 --threads 2",
+                             "--order auto"}) {
         const RunResult r = run("-i " + in + " --stats " + args);
         ASSERT_EQ(r.status, 0) << args << r.err;
         const FlatJson stats(r.err);

@@ -11,9 +11,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <random>
+#include <span>
 #include <vector>
 
 #include "delaunay_support.hpp"
@@ -38,6 +40,7 @@ rc::Gen<Options> gen_options() {
                                        Strategy::radial, Strategy::strips, Strategy::strips);
         o.incircle = *rc::gen::element(InCirclePolicy::determinant, InCirclePolicy::cosine);
         o.strip_points = *rc::gen::inRange<std::size_t>(1, 40);
+        o.strip_tiles = *rc::gen::element<std::size_t>(0, 1, 2, 3, 5);
         o.threads = *rc::gen::inRange(1u, 3u);
         return o;
     });
@@ -45,6 +48,7 @@ rc::Gen<Options> gen_options() {
 
 std::string describe(const Options& o) {
     return std::string(to_string(o.strategy)) + " strip_points " + std::to_string(o.strip_points) +
+           " strip_tiles " + std::to_string(o.strip_tiles) +
            " threads " + std::to_string(o.threads) +
            (o.incircle == InCirclePolicy::cosine ? " cosine" : " determinant");
 }
@@ -113,6 +117,7 @@ RC_GTEST_PROP(DelaunayStrategies, OneAndTwoThreadsGiveIdenticalArrays, ()) {
     Options o;
     o.strategy = Strategy::strips;
     o.strip_points = *rc::gen::inRange<std::size_t>(1, 60);
+    o.strip_tiles = *rc::gen::inRange<std::size_t>(1, 7);
     o.threads = 1;
     const Result one = triangulate(s.points, AdaptiveKernel{}, o);
     o.threads = 2;
@@ -166,14 +171,34 @@ rc::Gen<std::vector<Point2>> gen_cocircular_across_cuts() {
 void check_merges(const std::vector<Point2>& pts) {
     const EdgeSets oracle = test::cgal_edge_sets(pts);
     for (std::size_t sp : {1, 2, 3, 4, 7}) {
-        Options o;
-        o.strategy = Strategy::strips;
-        o.strip_points = sp;
-        check_against_cgal(pts, AdaptiveKernel{}, o, oracle);
+        for (std::size_t tiles : {1, 3}) {
+            Options o;
+            o.strategy = Strategy::strips;
+            o.strip_points = sp;
+            o.strip_tiles = tiles;
+            check_against_cgal(pts, AdaptiveKernel{}, o, oracle);
+        }
     }
 }
 
+/// Points on a few horizontal lines y = 0, 1, ... (integer x, repeats allowed): tiles
+/// cut between the lines, a tile holding a single line is collinear and joins its
+/// neighbour, and stacked pieces meet on collinear facing hulls.
+rc::Gen<std::vector<Point2>> gen_rows() {
+    return rc::gen::exec([] {
+        const int rows = *rc::gen::inRange(2, 7);
+        const std::size_t n = *rc::gen::inRange<std::size_t>(3, 120);
+        std::vector<Point2> p(n);
+        for (auto& q : p) {
+            q = {double(*rc::gen::inRange(-30, 31)), double(*rc::gen::inRange(0, rows))};
+        }
+        return p;
+    });
+}
+
 RC_GTEST_PROP(DelaunayMerge, PointsOnAFewVerticalLines, ()) { check_merges(*gen_columns()); }
+
+RC_GTEST_PROP(DelaunayMerge, PointsOnAFewHorizontalLines, ()) { check_merges(*gen_rows()); }
 
 RC_GTEST_PROP(DelaunayMerge, CocircularPointsSpanningCuts, ()) {
     check_merges(*gen_cocircular_across_cuts());
@@ -427,6 +452,126 @@ TEST(DelaunayRadial, AWrongDistanceComparisonIsDetectedNotMishandled) {
         EXPECT_FALSE(r.failure->message.empty());
         std::printf("reversed distance: %s\n", r.failure->message.c_str());
     }
+}
+
+// ---- tiles ------------------------------------------------------------------------------
+
+bool lex_less(Point2 a, Point2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
+bool yx_less(Point2 a, Point2 b) { return a.y < b.y || (a.y == b.y && a.x > b.x); }
+
+/// tile_strip's promises, on the strip pts[a..] of sorted distinct points: the strip's
+/// points and indices permuted, tiles of at least three points not all collinear, each in
+/// lexicographic order, every point of a tile strictly below every point of the next, and
+/// the merges' start points right.
+void check_tiles(const std::vector<Point2>& all, std::uint32_t a, std::size_t tiles) {
+    const std::span<const Point2> pts = std::span<const Point2>(all).subspan(a);
+    const auto m = static_cast<std::uint32_t>(pts.size());
+    std::vector<std::uint32_t> ids(m);
+    std::iota(ids.begin(), ids.end(), 100u);
+    std::vector<Point2> to_pts(m);
+    std::vector<std::uint32_t> to_ids(m);
+    delaunay::detail::TilingScratch scratch;
+    const delaunay::detail::StripTiles t = delaunay::detail::tile_strip(AdaptiveKernel{}, pts, ids, tiles,
+                                                    std::span<Point2>(to_pts),
+                                                    std::span<std::uint32_t>(to_ids), scratch);
+    RC_ASSERT(t.cuts.front() == 0u);
+    RC_ASSERT(t.cuts.back() == m);
+    RC_ASSERT(t.cuts.size() - 1 <= std::max<std::size_t>(tiles, 1));
+    std::vector<bool> seen(m, false);
+    for (std::uint32_t j = 0; j < m; ++j) {
+        RC_ASSERT(to_ids[j] >= 100u);
+        RC_ASSERT(to_ids[j] < 100u + m);
+        RC_ASSERT(!seen[to_ids[j] - 100]);
+        seen[to_ids[j] - 100] = true;
+        RC_ASSERT(to_pts[j] == pts[to_ids[j] - 100]);
+    }
+    for (std::size_t k = 0; k + 1 < t.cuts.size(); ++k) {
+        const std::uint32_t lo = t.cuts[k], hi = t.cuts[k + 1];
+        RC_ASSERT(hi >= lo + 3);
+        bool off_line = false;
+        for (std::uint32_t j = lo + 2; j < hi; ++j) {
+            off_line = off_line || AdaptiveKernel{}.orient2d(to_pts[lo], to_pts[lo + 1], to_pts[j]) != Sign::zero;
+        }
+        RC_ASSERT(off_line);
+        for (std::uint32_t j = lo + 1; j < hi; ++j) RC_ASSERT(lex_less(to_pts[j - 1], to_pts[j]));
+        for (std::uint32_t j = lo; j < hi; ++j) {
+            RC_ASSERT(!yx_less(to_pts[j], to_pts[t.low[k]]));
+            RC_ASSERT(!yx_less(to_pts[t.high[k]], to_pts[j]));
+            RC_ASSERT(!lex_less(to_pts[j], to_pts[t.first]));
+            RC_ASSERT(!lex_less(to_pts[t.last], to_pts[j]));
+            if (k + 1 < t.cuts.size() - 1) {
+                for (std::uint32_t i = hi; i < t.cuts[k + 2]; ++i) RC_ASSERT(to_pts[j].y < to_pts[i].y);
+            }
+        }
+    }
+}
+
+RC_GTEST_PROP(DelaunayTiles, TileStripCutsSeparatedSortedNonCollinearTiles, ()) {
+    const std::string family = *rc::gen::elementOf(test::point_set_family_names());
+    RC_TAG(family);
+    auto pts = *test::gen_family_points(family, *rc::gen::inRange<std::size_t>(3, 400));
+    std::sort(pts.begin(), pts.end(), lex_less);
+    pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+    const auto a = *rc::gen::inRange<std::uint32_t>(0, static_cast<std::uint32_t>(pts.size() / 3 + 1));
+    RC_PRE(pts.size() >= a + 3);
+    bool off_line = false;
+    for (std::size_t j = a + 2; j < pts.size(); ++j) {
+        off_line = off_line || AdaptiveKernel{}.orient2d(pts[a], pts[a + 1], pts[j]) != Sign::zero;
+    }
+    RC_PRE(off_line);
+    check_tiles(pts, a, *rc::gen::inRange<std::size_t>(1, 12));
+}
+
+// Rows of equal y (every tile boundary falls between rows, some tiles one row and
+// collinear), a y range of a few subnormals (scale infinite: one tile), and coordinates
+// near the largest double (y1 - y0 would overflow; halves do not).
+TEST(DelaunayTiles, TileStripOnRowsTinyAndHugeRanges) {
+    EXPECT_TRUE(rc::check("rows", [] {
+        std::vector<Point2> rows;
+        for (int y = 0; y < 9; ++y) {
+            for (int x = 0; x < (y % 3 == 0 ? 30 : 2); ++x) rows.push_back({double(x), double(y)});
+        }
+        std::sort(rows.begin(), rows.end(), lex_less);
+        check_tiles(rows, 0, *rc::gen::inRange<std::size_t>(1, 20));
+    }));
+    const double d = std::numeric_limits<double>::denorm_min();
+    std::vector<Point2> tiny{{0, 0}, {0, 2 * d}, {1, d}, {2, 0}, {2, 2 * d}, {3, d}};
+    std::vector<Point2> huge;
+    const double big = std::numeric_limits<double>::max();
+    for (int j = 0; j < 40; ++j) {
+        huge.push_back({j * 1e300, (j % 2 ? big : -big) * (1 - j / 64.0)});
+    }
+    for (auto* v : {&tiny, &huge}) std::sort(v->begin(), v->end(), lex_less);
+    for (std::size_t tiles : {1, 2, 5}) {
+        EXPECT_TRUE(rc::check("tiny and huge", [&] {
+            check_tiles(tiny, 0, tiles);
+            check_tiles(huge, 0, tiles);
+        }));
+    }
+    // The tiny range stays one tile; the huge one is cut.
+    delaunay::detail::TilingScratch scratch;
+    std::vector<Point2> to(huge.size());
+    std::vector<std::uint32_t> ids(huge.size()), to_ids(huge.size());
+    EXPECT_EQ(delaunay::detail::tile_strip(AdaptiveKernel{}, tiny, std::span(ids).first(6), 2,
+                                 std::span(to).first(6), std::span(to_ids).first(6), scratch)
+                  .cuts.size(),
+              2u);
+    EXPECT_GT(delaunay::detail::tile_strip(AdaptiveKernel{}, huge, ids, 4, std::span<Point2>(to),
+                                 std::span<std::uint32_t>(to_ids), scratch)
+                  .cuts.size(),
+              2u);
+}
+
+// Tiled triangulations of the same degenerate and extreme families, against CGAL.
+RC_GTEST_PROP(DelaunayTiles, TiledStripsMatchCgal, ()) {
+    const auto s = *test::gen_point_set(max_points);
+    Options o;
+    o.strategy = Strategy::strips;
+    o.strip_points = *rc::gen::inRange<std::size_t>(1, 30);
+    o.strip_tiles = *rc::gen::inRange<std::size_t>(2, 9);
+    o.threads = *rc::gen::inRange(1u, 3u);
+    RC_TAG(s.family);
+    check_against_cgal(s.points, AdaptiveKernel{}, o, test::cgal_edge_sets(s.points));
 }
 
 // ---- inexact kernels --------------------------------------------------------------------

@@ -18,6 +18,11 @@ constexpr std::size_t default_strip_points(std::size_t /*n*/) noexcept {
     return std::size_t{1} << 14;
 }
 
+/// Tiles per strip when Options::strip_tiles is 0.
+constexpr std::size_t default_strip_tiles(std::size_t /*n*/, std::size_t /*strip_points*/) noexcept {
+    return 1;
+}
+
 /// The size rule of `automatic` for n distinct points: radial below automatic_strips_from,
 /// strips from there, where the shape may still choose radial (detail/curve_rule.hpp).
 constexpr Strategy choose_strategy(std::size_t n, Strategy requested) noexcept {

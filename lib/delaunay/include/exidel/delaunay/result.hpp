@@ -49,6 +49,11 @@ struct Options {
     /// triangulation with an exact kernel, and the same one whenever no four points are
     /// cocircular.
     Algorithm algorithm = Algorithm::external;
+    /// Tiles per strip for the strips strategy: each strip holds about strip_tiles x
+    /// strip_points points and is cut across (by y) into strip_tiles tiles of about
+    /// strip_points, so that pieces stay roughly square when strips would be thin; 1 =
+    /// plain strips; 0 chooses by input size (default_strip_tiles, external.hpp).
+    std::size_t strip_tiles = 0;
 };
 
 /// What a run records. `off` compiles every counter away.
@@ -184,7 +189,7 @@ struct Result {
     std::optional<Failure> failure;
     Algorithm algorithm = Algorithm::external;    ///< the algorithm that ran
     Strategy strategy = Strategy::lexicographic;  ///< external: the strategy that ran (never automatic)
-    std::size_t strips = 1;                       ///< pieces merged (1 unless strips ran)
+    std::size_t strips = 1;  ///< pieces merged (1 unless strips ran): strips, or their tiles
     bool ok() const noexcept { return !failure.has_value(); }
 };
 

@@ -54,12 +54,6 @@
 
 namespace exidel::delaunay::detail {
 
-/// The order a cut separates by: vertical cuts (x, y), horizontal cuts (y, -x).
-inline bool cut_less(Point2 a, Point2 b, bool horizontal) {
-    if (horizontal) return a.y < b.y || (a.y == b.y && a.x > b.x);
-    return a.x < b.x || (a.x == b.x && a.y < b.y);
-}
-
 template <PredicateKernel K, Instrumentation I, InCirclePolicy P, bool Alternate>
 class DivideAndConquerBuilder {
 public:

@@ -33,7 +33,9 @@ namespace exidel::delaunay::detail {
 
 struct ExternalIncremental {
     template <PredicateKernel K, Instrumentation I, InCirclePolicy P>
-    static void run(const K& kernel, const SortedInput& in, const Options& options,
+    /// `in` is consumed: tiled strips permute its points and input indices in place (the
+    /// mesh's ids are positions in them; out.first says where the smallest point went).
+    static void run(const K& kernel, SortedInput& in, const Options& options,
                     MeshOutput& out, Result& result) {
         const std::size_t n = in.points.size();
         result.strategy = choose_strategy(n, options.strategy);
@@ -41,29 +43,43 @@ struct ExternalIncremental {
             radial_follows_curve(in.points, kernel)) {
             result.strategy = Strategy::radial;
         }
-        Mesh& mesh = out.mesh;
         auto radial = [&](Strategy reported) {
             result.strategy = reported;
             build_radial_output<K, I, P>(kernel, in, out, result);
         };
         if (n < 3) {
-            mesh.collinear = true;
+            out.mesh.collinear = true;
         } else if (result.strategy == Strategy::lexicographic) {
             Builder<K, I, P, LastPointStart> builder(kernel, in.points, in.input_of);
-            result.failure = builder.run(mesh);
+            result.failure = builder.run(out.mesh);
             result.counters = builder.counters();
         } else if (result.strategy == Strategy::radial) {
             radial(Strategy::radial);
         } else {
             const std::size_t target =
                 options.strip_points != 0 ? options.strip_points : default_strip_points(n);
-            const std::vector<std::uint32_t> cuts = strip_cuts(in.points, target, kernel);
+            const std::size_t tiles =
+                options.strip_tiles != 0 ? options.strip_tiles : default_strip_tiles(n, target);
+            const std::size_t strip = target > n / tiles ? n : target * tiles;  // no overflow
+            const std::vector<std::uint32_t> cuts = strip_cuts(in.points, strip, kernel);
             result.strips = cuts.size() - 1;
-            if (result.strips == 1) {
-                radial(Strategy::strips);  // one strip: its radial run is the whole job
+            // One strip: its radial run is the whole job, unless it is to be tiled (and
+            // is not collinear, which the radial run reports as Builder does).
+            auto collinear = [&] {
+                for (std::size_t j = 2; j < n; ++j) {
+                    if (kernel.orient2d(in.points[0], in.points[1], in.points[j]) != Sign::zero) {
+                        return false;
+                    }
+                }
+                return true;
+            };
+            if (result.strips == 1 && (tiles <= 1 || collinear())) {
+                radial(Strategy::strips);
             } else {
-                result.failure = build_strips<K, I, P>(kernel, in.points, in.input_of, cuts,
-                                                       options.threads, mesh, result.counters);
+                result.failure = build_strips<K, I, P>(
+                    kernel, std::span<Point2>(in.points), std::span<std::uint32_t>(in.input_of),
+                    cuts, tiles, options.threads, out.mesh, out.first, result.counters,
+                    result.strips);
             }
         }
     }

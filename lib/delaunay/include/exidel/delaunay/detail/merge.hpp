@@ -96,6 +96,13 @@ private:
     std::size_t size_ = 0;
 };
 
+/// The order a cut separates pieces by: vertical cuts (x, y), horizontal cuts (y, -x)
+/// (the zipper's l0 is the largest point of L in it, r0 the smallest of R).
+inline bool cut_less(Point2 a, Point2 b, bool horizontal) {
+    if (horizontal) return a.y < b.y || (a.y == b.y && a.x > b.x);
+    return a.x < b.x || (a.x == b.x && a.y < b.y);
+}
+
 /// A triangulated piece of the sorted points: positions [first, end), triangle slots
 /// [2 first, 2 end) of the shared Mesh, `free` the slots of that range not in use.
 struct Piece {

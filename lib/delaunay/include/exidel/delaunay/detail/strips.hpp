@@ -11,9 +11,12 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "exidel/delaunay/detail/builder.hpp"
@@ -62,6 +65,162 @@ std::vector<std::uint32_t> strip_cuts(std::span<const Point2> pts, std::size_t t
     return cuts;
 }
 
+/// A strip cut across into tiles (tile_strip): tile j is positions [cuts[j], cuts[j+1]),
+/// every point of a tile below every point of the next (a horizontal line between them).
+/// low[j] and high[j]: tile j's smallest and largest point in the order (y, -x), where the
+/// zipper starts a merge of stacked pieces (merge.hpp); first and last: the strip's
+/// lexicographically smallest and largest point, where it starts a merge of strips.
+struct StripTiles {
+    std::vector<std::uint32_t> cuts, low, high;
+    std::uint32_t first = 0, last = 0;
+};
+
+/// Working memory of tile_strip, reused from strip to strip.
+struct TilingScratch {
+    std::vector<std::uint32_t> count, tile_of, offset;
+    std::vector<std::pair<Point2, std::uint32_t>> items;
+};
+
+/// Cuts a strip, the lexicographically sorted `pts` (not all collinear) with their
+/// `input_of`, across into about `tiles` tiles of consecutive y, and writes its points and
+/// input indices to `to_pts` and `to_ids` (of the same size), tile after tile, each tile
+/// in lexicographic order (build_piece's requirement) and not all collinear (the
+/// zipper's). Positions in the result are positions in these arrays.
+///
+/// Why the tiles are separated: a point's bucket is fl(fl(fl(y/2) - fl(y0/2)) * scale),
+/// clamped, with y0 the strip's smallest y and scale > 0 finite. Each operation is
+/// monotone in y (rounding is monotone; halving avoids the overflow of y - y0 near the
+/// largest double), so a smaller bucket means a strictly smaller y, and a tile is a run of
+/// consecutive buckets. Points with equal y share a bucket, hence a tile. A strip whose
+/// y range leaves scale infinite or zero (all y equal, or within a few subnormals) stays
+/// one tile. Tiles that came out all collinear (fewer than three points, or on one line)
+/// are joined to the next tile (the last to the one before) and that union re-sorted;
+/// the strip itself is not collinear, so the joining ends with at least one tile.
+template <PredicateKernel K>
+StripTiles tile_strip(const K& kernel, std::span<const Point2> pts,
+                      std::span<const std::uint32_t> input_of, std::size_t tiles,
+                      std::span<Point2> to_pts, std::span<std::uint32_t> to_ids,
+                      TilingScratch& scratch) {
+    StripTiles out;
+    const auto m = static_cast<std::uint32_t>(pts.size());
+    double y0 = pts[0].y, y1 = y0;
+    for (std::uint32_t j = 0; j < m; ++j) {
+        y0 = std::min(y0, pts[j].y);
+        y1 = std::max(y1, pts[j].y);
+    }
+    tiles = std::min(tiles, std::max<std::size_t>(1, m / 3));  // a tile needs three points
+    // 64 buckets per tile: tiles within about 1/64 of their target size on smooth input.
+    const std::size_t buckets = 64 * std::max<std::size_t>(tiles, 1);
+    const double scale = static_cast<double>(buckets) / (y1 / 2 - y0 / 2);
+    const double y0_half = y0 / 2;
+    const bool one_tile = tiles <= 1 || !(scale > 0) || !std::isfinite(scale);
+    auto bucket = [&](double y) {
+        const double f = (y / 2 - y0_half) * scale;  // in [0, buckets (1 + 2^-52)]
+        return std::min(buckets - 1, static_cast<std::size_t>(f));
+    };
+    std::vector<std::uint32_t>& count = scratch.count;
+    std::vector<std::uint32_t>& tile_of = scratch.tile_of;
+    std::vector<std::uint32_t>& offset = scratch.offset;
+    offset.clear();
+    if (one_tile) {
+        count.assign(1, 0);
+        tile_of.assign(1, 0);
+        offset.push_back(m);
+    } else {
+        count.assign(buckets, 0);
+        for (std::uint32_t j = 0; j < m; ++j) ++count[bucket(pts[j].y)];
+        // Consecutive buckets fill a tile up to the target; a short last tile joins the
+        // one before it. (With the target rounded up, at most `tiles` tiles.)
+        const std::size_t target = (m + tiles - 1) / tiles;
+        tile_of.assign(buckets, 0);
+        std::size_t filled = 0;
+        for (std::size_t k = 0; k < buckets; ++k) {
+            tile_of[k] = static_cast<std::uint32_t>(offset.size());
+            filled += count[k];
+            if (filled >= target) {
+                offset.push_back(static_cast<std::uint32_t>(filled));
+                filled = 0;
+            }
+        }
+        if (filled > 0 && (offset.empty() || filled >= target / 2)) {
+            offset.push_back(static_cast<std::uint32_t>(filled));
+        } else if (filled > 0) {
+            offset.back() += static_cast<std::uint32_t>(filled);
+        }
+        for (std::uint32_t& t : tile_of) t = std::min(t, static_cast<std::uint32_t>(offset.size() - 1));
+    }
+    // offset: tile sizes -> each tile's next free position (a stable scatter by tile).
+    std::uint32_t start = 0;
+    out.cuts.assign(1, 0);
+    for (std::uint32_t& o : offset) {
+        const std::uint32_t size = o;
+        o = start;
+        start += size;
+        out.cuts.push_back(start);
+    }
+    for (std::uint32_t j = 0; j < m; ++j) {
+        const std::uint32_t to = offset[one_tile ? 0 : tile_of[bucket(pts[j].y)]]++;
+        to_pts[to] = pts[j];
+        to_ids[to] = input_of[j];
+    }
+    // Join collinear tiles to their neighbours.
+    auto collinear = [&](std::uint32_t lo, std::uint32_t hi) {
+        if (hi - lo < 3) return true;
+        for (std::uint32_t j = lo + 2; j < hi; ++j) {
+            if (kernel.orient2d(to_pts[lo], to_pts[lo + 1], to_pts[j]) != Sign::zero) return false;
+        }
+        return true;
+    };
+    auto resort = [&](std::uint32_t lo, std::uint32_t hi) {
+        auto& items = scratch.items;
+        items.clear();
+        for (std::uint32_t j = lo; j < hi; ++j) items.emplace_back(to_pts[j], to_ids[j]);
+        std::sort(items.begin(), items.end(), [](const auto& p, const auto& q) {
+            return cut_less(p.first, q.first, false);
+        });
+        for (std::uint32_t j = lo; j < hi; ++j) std::tie(to_pts[j], to_ids[j]) = items[j - lo];
+    };
+    std::vector<std::uint32_t> joined{0};
+    std::size_t parts = 0;  // tiles in the union since the last kept cut
+    for (std::size_t t = 1; t < out.cuts.size(); ++t) {
+        ++parts;
+        if (collinear(joined.back(), out.cuts[t])) continue;
+        if (parts > 1) resort(joined.back(), out.cuts[t]);
+        joined.push_back(out.cuts[t]);
+        parts = 0;
+    }
+    if (joined.back() != m) {  // a collinear tail joins the last tile
+        // (None kept at all only if an inexact kernel contradicts strip_cuts' answer: one
+        // tile, which build_piece then reports as collinear.)
+        if (joined.size() == 1) {
+            joined.push_back(m);
+        } else {
+            joined.back() = m;
+        }
+        resort(joined[joined.size() - 2], m);
+    }
+    out.cuts = std::move(joined);
+    // The start points of the merges.
+    const std::size_t count_tiles = out.cuts.size() - 1;
+    out.low.resize(count_tiles);
+    out.high.resize(count_tiles);
+    out.first = 0;
+    out.last = 0;
+    for (std::size_t t = 0; t < count_tiles; ++t) {
+        std::uint32_t lo = out.cuts[t], hi = lo;
+        for (std::uint32_t j = out.cuts[t] + 1; j < out.cuts[t + 1]; ++j) {
+            if (cut_less(to_pts[j], to_pts[lo], true)) lo = j;
+            if (cut_less(to_pts[hi], to_pts[j], true)) hi = j;
+        }
+        out.low[t] = lo;
+        out.high[t] = hi;
+        const std::uint32_t first = out.cuts[t], last = out.cuts[t + 1] - 1;
+        if (cut_less(to_pts[first], to_pts[out.first], false)) out.first = first;
+        if (cut_less(to_pts[out.last], to_pts[last], false)) out.last = last;
+    }
+    return out;
+}
+
 /// Triangulates positions [a, b) of `pts` (sorted lexicographically, at least three, not
 /// all collinear) into the shared arrays: vertex ids are positions, triangle slots
 /// [2a, 2b) (a triangulation of b - a points has at most 2 (b - a) - 5 triangles). Three points are one triangle,
@@ -72,6 +231,9 @@ struct PieceWorkspace {
     RadialIds ids;
     Mesh part;
     RadialWorkspace radial;
+    TilingScratch tiling;
+    FreshVector<Point2> strip_points;  // a strip being tiled, as it was sorted
+    FreshVector<std::uint32_t> strip_ids;
 };
 
 template <PredicateKernel K, Instrumentation I, InCirclePolicy P>
@@ -131,13 +293,19 @@ std::optional<Failure> build_piece(const K& kernel, std::span<const Point2> pts,
     return std::nullopt;
 }
 
-/// Triangulates the sorted points by strips into `mesh` (over sorted positions). With a
-/// single strip, returns std::nullopt with mesh.collinear possibly set, as Builder does.
+/// Triangulates the sorted points by strips into `mesh`, over positions of `pts`: the
+/// strips [cuts[s], cuts[s+1]), each cut across into about `tiles` tiles (tile_strip)
+/// when `tiles` > 1. Tiles permute each strip's positions in `pts` and `input_of`
+/// together (plain strips leave them as they are); `first` receives the position of the
+/// lexicographically smallest point. `pieces_built`: the strips, or their tiles, that
+/// were triangulated and merged. Every strip must be non-collinear (strip_cuts); a single
+/// strip is only worth this with tiles (one plain strip is one radial run).
 template <PredicateKernel K, Instrumentation I, InCirclePolicy P>
-std::optional<Failure> build_strips(const K& kernel, std::span<const Point2> pts,
-                                    std::span<const std::uint32_t> input_of,
-                                    std::span<const std::uint32_t> cuts, unsigned threads,
-                                    Mesh& mesh, Counters& counters) {
+std::optional<Failure> build_strips(const K& kernel, std::span<Point2> pts,
+                                    std::span<std::uint32_t> input_of,
+                                    std::span<const std::uint32_t> cuts, std::size_t tiles,
+                                    unsigned threads, Mesh& mesh, std::uint32_t& first_point,
+                                    Counters& counters, std::size_t& pieces_built) {
     const std::size_t n = pts.size();
     const std::size_t strips = cuts.size() - 1;
     mesh = Mesh{};
@@ -147,15 +315,55 @@ std::optional<Failure> build_strips(const K& kernel, std::span<const Point2> pts
     assign_fresh(mesh.hull_prev, n, dead);
     assign_fresh(mesh.hull_edge, n, -1);
     std::vector<Piece> pieces(strips);
+    // Each strip's lexicographically smallest and largest point, where the merges of
+    // strips start: its first and last position, unless tiles permuted it.
+    std::vector<std::uint32_t> first(strips), last(strips), pieces_of(strips, 1);
 
-    auto build_strip = [&](std::size_t s, Counters& into, PieceWorkspace& work) {
-        return build_piece<K, I, P>(kernel, pts, input_of, cuts[s], cuts[s + 1], mesh, pieces[s],
-                                    into, work);
+    auto build_strip = [&](std::size_t s, Counters& into, PieceWorkspace& work)
+        -> std::optional<Failure> {
+        const std::uint32_t a = cuts[s], b = cuts[s + 1];
+        if (tiles <= 1) {
+            first[s] = a;
+            last[s] = b - 1;
+            return build_piece<K, I, P>(kernel, pts, input_of, a, b, mesh, pieces[s], into, work);
+        }
+        // The strip's sorted points are copied out and scattered back tile by tile.
+        work.strip_points.assign(pts.begin() + a, pts.begin() + b);
+        work.strip_ids.assign(input_of.begin() + a, input_of.begin() + b);
+        StripTiles t = tile_strip(kernel, std::span<const Point2>(work.strip_points),
+                                  std::span<const std::uint32_t>(work.strip_ids), tiles,
+                                  pts.subspan(a, b - a), input_of.subspan(a, b - a), work.tiling);
+        for (auto* v : {&t.cuts, &t.low, &t.high}) {
+            for (std::uint32_t& j : *v) j += a;
+        }
+        first[s] = a + t.first;
+        last[s] = a + t.last;
+        // The tiles of the strip, merged bottom up in pairs like the strips (below), each
+        // merge as soon as both its halves exist.
+        const std::size_t count = t.cuts.size() - 1;
+        pieces_of[s] = static_cast<std::uint32_t>(count);
+        std::vector<Piece> stack(count);
+        Merger<K, I> merger(kernel, pts, mesh);
+        auto solve = [&](auto& self, std::size_t lo, std::size_t size) -> std::optional<Failure> {
+            if (size == 1) {
+                return build_piece<K, I, P>(kernel, pts, input_of, t.cuts[lo], t.cuts[lo + 1],
+                                            mesh, stack[lo], into, work);
+            }
+            const std::size_t half = size / 2;
+            if (auto failure = self(self, lo, half)) return failure;
+            if (lo + half >= count) return std::nullopt;
+            if (auto failure = self(self, lo + half, half)) return failure;
+            return merger.merge(stack[lo], stack[lo + half], t.high[lo + half - 1], t.low[lo + half]);
+        };
+        auto failure = solve(solve, 0, std::bit_ceil(count));
+        into += merger.counters();
+        pieces[s] = std::move(stack[0]);
+        return failure;
     };
 
     auto merge = [&](std::size_t left, std::size_t right, Counters& into) {
         Merger<K, I> merger(kernel, pts, mesh);
-        auto failure = merger.merge(pieces[left], pieces[right]);
+        auto failure = merger.merge(pieces[left], pieces[right], last[right - 1], first[right]);
         into += merger.counters();
         return failure;
     };
@@ -204,6 +412,9 @@ std::optional<Failure> build_strips(const K& kernel, std::span<const Point2> pts
             if (merge_failures[j]) return merge_failures[j];
         }
     }
+    first_point = first[0];
+    pieces_built = 0;
+    for (const std::uint32_t p : pieces_of) pieces_built += p;
     return std::nullopt;
 }
 
