@@ -562,6 +562,12 @@ TEST(DelaunayTiles, TileStripOnRowsTinyAndHugeRanges) {
               2u);
 }
 
+// The default keeps plain strips (and their arrays) below 2^24 points, then square tiles.
+static_assert(default_strip_tiles(tiles_from - 1, 1 << 14) == 1);
+static_assert(default_strip_tiles(tiles_from, 1 << 14) == 32);
+static_assert(default_strip_tiles(100'000'000, 1 << 14) == 78);
+static_assert(default_strip_tiles(delaunay::detail::max_points, 1) == 18708);
+
 // Tiled triangulations of the same degenerate and extreme families, against CGAL.
 RC_GTEST_PROP(DelaunayTiles, TiledStripsMatchCgal, ()) {
     const auto s = *test::gen_point_set(max_points);

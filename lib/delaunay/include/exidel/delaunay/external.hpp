@@ -18,9 +18,24 @@ constexpr std::size_t default_strip_points(std::size_t /*n*/) noexcept {
     return std::size_t{1} << 14;
 }
 
-/// Tiles per strip when Options::strip_tiles is 0.
-constexpr std::size_t default_strip_tiles(std::size_t /*n*/, std::size_t /*strip_points*/) noexcept {
-    return 1;
+/// From this many points the default cuts its strips into tiles (default_strip_tiles).
+inline constexpr std::size_t tiles_from = std::size_t{1} << 24;
+
+/// Tiles per strip when Options::strip_tiles is 0. Below tiles_from, 1: plain strips, the
+/// arrays every input up to that size has always been given (tests/delaunay/
+/// golden_test.cpp pins them). From there, about sqrt(n / strip_points): strips of that
+/// many tiles, and as many strips, make square tiles of points spread over a square.
+/// Plain strips of 2^14 points get thin as n grows (at 10^8, 6104 of them, about 1.6
+/// points across), their triangulations are mostly slivers that the merges delete, and
+/// the time per point rose by 1.6x from 10^7 to 10^8; square tiles keep every piece's
+/// shape, and the merges cost about the square root of their pieces (README,
+/// "Triangulation", issue 17's fourth session, for the measurements).
+constexpr std::size_t default_strip_tiles(std::size_t n, std::size_t strip_points) noexcept {
+    if (n < tiles_from || strip_points == 0) return 1;
+    const std::size_t ratio = n / strip_points;
+    std::size_t tiles = 1;
+    while ((tiles + 1) * (tiles + 1) <= ratio) ++tiles;
+    return tiles;
 }
 
 /// The size rule of `automatic` for n distinct points: radial below automatic_strips_from,
