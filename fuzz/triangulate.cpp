@@ -82,10 +82,11 @@ bool all_finite(const std::vector<Point2>& points) {
 }
 
 [[noreturn]] void finding(const char* what, const delaunay::Options& o, std::size_t n) {
-    std::fprintf(stderr, "%s: algorithm %s, order %s, incircle %s, %zu points\n", what,
-                 std::string(delaunay::to_string(o.algorithm)).c_str(),
+    std::fprintf(stderr, "%s: algorithm %s, order %s, incircle %s, strip tiles %zu, %zu points\n",
+                 what, std::string(delaunay::to_string(o.algorithm)).c_str(),
                  std::string(delaunay::to_string(o.strategy)).c_str(),
-                 o.incircle == delaunay::InCirclePolicy::cosine ? "cosine" : "determinant", n);
+                 o.incircle == delaunay::InCirclePolicy::cosine ? "cosine" : "determinant",
+                 o.strip_tiles, n);
     std::abort();
 }
 
@@ -94,6 +95,19 @@ bool all_finite(const std::vector<Point2>& points) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::vector<Point2> points = decode(data, size);
     const bool finite = all_finite(points);
+    auto run = [&](const delaunay::Options& o) {
+        const delaunay::Result exact = delaunay::triangulate(points, Adaptive{}, o);
+        if (!finite) {
+            if (!exact.failure || exact.failure->kind != delaunay::FailureKind::non_finite_input) {
+                finding("non-finite input not refused", o, points.size());
+            }
+        } else if (exact.failure) {
+            finding("the adaptive kernel's run failed", o, points.size());
+        } else if (!delaunay::certify(points, exact.triangulation).ok()) {
+            finding("the adaptive kernel's result does not certify", o, points.size());
+        }
+        (void)delaunay::triangulate(points, Double{}, o);
+    };
     for (const delaunay::AlgorithmInfo& a : delaunay::algorithms()) {
         for (const delaunay::Strategy s : {delaunay::Strategy::lexicographic, delaunay::Strategy::radial,
                                            delaunay::Strategy::strips}) {
@@ -104,17 +118,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 o.strategy = a.takes_order ? s : delaunay::Strategy::automatic;
                 o.incircle = policy;
                 o.strip_points = 8;  // several strips and merges even for small inputs
-                const delaunay::Result exact = delaunay::triangulate(points, Adaptive{}, o);
-                if (!finite) {
-                    if (!exact.failure || exact.failure->kind != delaunay::FailureKind::non_finite_input) {
-                        finding("non-finite input not refused", o, points.size());
-                    }
-                } else if (exact.failure) {
-                    finding("the adaptive kernel's run failed", o, points.size());
-                } else if (!delaunay::certify(points, exact.triangulation).ok()) {
-                    finding("the adaptive kernel's result does not certify", o, points.size());
+                o.strip_tiles = 1;
+                run(o);
+                if (a.takes_order && s == delaunay::Strategy::strips) {
+                    o.strip_tiles = 3;  // strips cut across into tiles: stacked pieces merged
+                    run(o);
                 }
-                (void)delaunay::triangulate(points, Double{}, o);
             }
         }
     }
