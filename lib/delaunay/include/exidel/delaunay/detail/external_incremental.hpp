@@ -66,15 +66,8 @@ struct ExternalIncremental {
             result.strips = cuts.size() - 1;
             // One strip: its radial run is the whole job, unless it is to be tiled (and
             // is not collinear, which the radial run reports as Builder does).
-            auto collinear = [&] {
-                for (std::size_t j = 2; j < n; ++j) {
-                    if (kernel.orient2d(in.points[0], in.points[1], in.points[j]) != Sign::zero) {
-                        return false;
-                    }
-                }
-                return true;
-            };
-            if (result.strips == 1 && (tiles <= 1 || collinear())) {
+            if (result.strips == 1 &&
+                (tiles <= 1 || all_on_one_line(std::span<const Point2>(in.points), kernel))) {
                 radial(Strategy::strips);
             } else {
                 result.failure = build_strips<K, I, P>(

@@ -35,6 +35,16 @@
 
 namespace exidel::delaunay::detail {
 
+/// Whether `pts` (distinct) lie on one line, by the kernel's orient2d against the first
+/// two; fewer than three points always do.
+template <PredicateKernel K>
+bool all_on_one_line(std::span<const Point2> pts, const K& kernel) {
+    for (std::size_t j = 2; j < pts.size(); ++j) {
+        if (kernel.orient2d(pts[0], pts[1], pts[j]) != Sign::zero) return false;
+    }
+    return true;
+}
+
 /// Cut positions: strips [cuts[s], cuts[s+1]) of at least `target` points, each extended
 /// until its points are not all collinear (by the kernel's orient2d); a collinear tail
 /// joins the last strip. Returns {0, n} when no cut is possible.
@@ -172,11 +182,7 @@ StripTiles tile_strip(const K& kernel, std::span<const Point2> pts,
     }
     // Join collinear tiles to their neighbours.
     auto collinear = [&](std::uint32_t lo, std::uint32_t hi) {
-        if (hi - lo < 3) return true;
-        for (std::uint32_t j = lo + 2; j < hi; ++j) {
-            if (kernel.orient2d(to_pts[lo], to_pts[lo + 1], to_pts[j]) != Sign::zero) return false;
-        }
-        return true;
+        return all_on_one_line(std::span<const Point2>(to_pts).subspan(lo, hi - lo), kernel);
     };
     auto resort = [&](std::uint32_t lo, std::uint32_t hi) {
         auto& items = scratch.items;
