@@ -108,9 +108,8 @@ std::vector<Column> columns(unsigned proven) {
     };
 }
 
-const std::vector<std::string> column_titles{"double",  "long-double", "adaptive",
-                                             "exact",   "exact-cpp",   "mpfr:53",
-                                             "mpfr:106", "mpfr:proven"};
+const std::vector<std::string> column_titles{"double",    "long-double", "adaptive", "exact",
+                                             "exact-cpp", "mpfr:53",     "mpfr:106", "mpfr:proven"};
 
 // ---- command line ----------------------------------------------------------------------
 
@@ -164,9 +163,10 @@ int main(int argc, char** argv) {
         return 2;
     }
     const auto start = std::chrono::steady_clock::now();
-    std::printf("exidel-agreement: seed %llu, n %zu per row; cell = sign disagreements with "
-                "CGAL Epick out of N\n\n",
-                static_cast<unsigned long long>(opt.seed), opt.n);
+    std::printf(
+        "exidel-agreement: seed %llu, n %zu per row; cell = sign disagreements with "
+        "CGAL Epick out of N\n\n",
+        static_cast<unsigned long long>(opt.seed), opt.n);
     std::printf("%-16s %-16s %6s", "family", "predicate", "N");
     for (const std::string& t : column_titles) std::printf(" %11s", t.c_str());
     std::printf(" %6s\n", "bits");
@@ -192,7 +192,8 @@ int main(int argc, char** argv) {
                 oracle.push_back(cgal_sign(p, q));
                 proven = std::max(proven, proven_bits(p, q));
             }
-            std::printf("%-16s %-16s %6zu", fams[fi].name.c_str(), std::string(predicate_name(p)).c_str(), queries.size());
+            std::printf("%-16s %-16s %6zu", fams[fi].name.c_str(),
+                        std::string(predicate_name(p)).c_str(), queries.size());
             for (const Column& c : columns(proven)) {
                 if (queries.empty()) {
                     std::printf(" %11s", "-");
@@ -211,8 +212,9 @@ int main(int argc, char** argv) {
     }
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("\nbits: precision of the mpfr:proven column (the row's largest 2b+3 / 4b+8 / "
-                "8b+12).\nfamilies:\n");
+    std::printf(
+        "\nbits: precision of the mpfr:proven column (the row's largest 2b+3 / 4b+8 / "
+        "8b+12).\nfamilies:\n");
     for (const auto& f : fams) std::printf("  %-16s %s\n", f.name.c_str(), f.description.c_str());
     std::printf("%.1f s\n", seconds);
     if (exactness_broken) {

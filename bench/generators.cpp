@@ -225,8 +225,7 @@ Quad kettner4(Rng& rng) {
         return quad({on_ulp_grid({0.5, 0.5}, rng), {12, 12}, {24, 24}, {diagonal, diagonal}});
     }
     const auto shifted = [](double x, double y) { return Point2{x + 0.1, y + 0.3}; };
-    return quad(
-        {shifted(-4, 3), shifted(5, 0), shifted(3, 4), on_ulp_grid(shifted(-3, -4), rng)});
+    return quad({shifted(-4, 3), shifted(5, 0), shifted(3, 4), on_ulp_grid(shifted(-3, -4), rng)});
 }
 
 // ---- duplicates: some points of the query coincide -------------------------------------
@@ -278,15 +277,13 @@ const std::vector<Family>& families() {
         {"scaled", "uniform times 2^k, k in [-1000, 1000] per query", scaled3, scaled4},
         {"grid", "integers in [-8, 8]^2", grid3, grid4},
         {"grid-near", "grid, last point +-3 ulps", near3<grid3>, near4<grid4>},
-        {"circle", "exactly cocircular lattice points, translated and scaled by 2^-s",
-         circle3, circle4, circle_distance},
+        {"circle", "exactly cocircular lattice points, translated and scaled by 2^-s", circle3,
+         circle4, circle_distance},
         {"circle-near", "circle, last point +-3 ulps", near3<circle3>, near4<circle4>,
          near3<circle_distance>},
         {"collinear", "exactly collinear, dyadic slopes", collinear3, collinear4},
-        {"collinear-near", "collinear, last point +-3 ulps", near3<collinear3>,
-         near4<collinear4>},
-        {"kettner", "Kettner et al. configurations, p over a 256x256 ulp grid", kettner3,
-         kettner4},
+        {"collinear-near", "collinear, last point +-3 ulps", near3<collinear3>, near4<collinear4>},
+        {"kettner", "Kettner et al. configurations, p over a 256x256 ulp grid", kettner3, kettner4},
         {"duplicates", "uniform with coinciding points", duplicates3, duplicates4},
         {"duplicates-near", "duplicates, last point +-3 ulps", near3<duplicates3>,
          near4<duplicates4>},

@@ -4,7 +4,8 @@
 // Kept here, self-contained, while the RapidCheck generators in lib/testing/ are being
 // written; the two should be unified later (these are plain functions of a std::mt19937_64,
 // usable from both). Compiled with -ffp-contract=off, so every generated double is exactly
-// what the code below says (docs/background.md section 2: contraction changes generated inputs too).
+// what the code below says (docs/background.md section 2: contraction changes generated inputs
+// too).
 #pragma once
 
 #include <cstdint>

@@ -68,9 +68,9 @@ Query near_coplanar(Rng& rng) {
     Query q = uniform_query(rng);
     const double s = unit(rng) * 2 - 0.5, t = unit(rng) * 2 - 0.5;
     const Point3 a = q[0], b = q[1], c = q[2];
-    q[3] = jiggle(rng, {a.x + s * (b.x - a.x) + t * (c.x - a.x),
-                        a.y + s * (b.y - a.y) + t * (c.y - a.y),
-                        a.z + s * (b.z - a.z) + t * (c.z - a.z)});
+    q[3] = jiggle(rng,
+                  {a.x + s * (b.x - a.x) + t * (c.x - a.x), a.y + s * (b.y - a.y) + t * (c.y - a.y),
+                   a.z + s * (b.z - a.z) + t * (c.z - a.z)});
     return q;
 }
 
@@ -161,15 +161,15 @@ const std::vector<Input>& inputs() {
     return all;
 }
 
-
 template <PredicateKernel3D K>
 void register_kernel(const K& k, bool every_family) {
     for (const Input& in : inputs()) {
         if (!in.every_kernel && !every_family) continue;
         const std::string suffix = "/" + in.name + "/" + std::string(k.name());
         benchmark::RegisterBenchmark(("orient3d" + suffix).c_str(), [k, &in](benchmark::State& s) {
-            exidel::bench::cycle(s, in.orient,
-                [&k](const Query& q) { return to_int(k.orient3d(q[0], q[1], q[2], q[3])); });
+            exidel::bench::cycle(s, in.orient, [&k](const Query& q) {
+                return to_int(k.orient3d(q[0], q[1], q[2], q[3]));
+            });
         });
         benchmark::RegisterBenchmark(("insphere" + suffix).c_str(), [k, &in](benchmark::State& s) {
             exidel::bench::cycle(s, in.insphere, [&k](const Query& q) {
@@ -188,20 +188,20 @@ Epick::Point_3 to_cgal(Point3 p) { return {p.x, p.y, p.z}; }
 // sign is negated so both sides compute the same sum.
 void register_cgal() {
     for (const Input& in : inputs()) {
-        benchmark::RegisterBenchmark(("orient3d/" + in.name + "/cgal-epick").c_str(),
-                                     [&in](benchmark::State& s) {
-            exidel::bench::cycle(s, in.orient, [](const Query& q) {
-                return -static_cast<int>(CGAL::orientation(to_cgal(q[0]), to_cgal(q[1]),
-                                                           to_cgal(q[2]), to_cgal(q[3])));
+        benchmark::RegisterBenchmark(
+            ("orient3d/" + in.name + "/cgal-epick").c_str(), [&in](benchmark::State& s) {
+                exidel::bench::cycle(s, in.orient, [](const Query& q) {
+                    return -static_cast<int>(CGAL::orientation(to_cgal(q[0]), to_cgal(q[1]),
+                                                               to_cgal(q[2]), to_cgal(q[3])));
+                });
             });
-        });
-        benchmark::RegisterBenchmark(("insphere/" + in.name + "/cgal-epick").c_str(),
-                                     [&in](benchmark::State& s) {
-            exidel::bench::cycle(s, in.insphere, [](const Query& q) {
-                return -static_cast<int>(CGAL::side_of_oriented_sphere(
-                    to_cgal(q[0]), to_cgal(q[1]), to_cgal(q[2]), to_cgal(q[3]), to_cgal(q[4])));
+        benchmark::RegisterBenchmark(
+            ("insphere/" + in.name + "/cgal-epick").c_str(), [&in](benchmark::State& s) {
+                exidel::bench::cycle(s, in.insphere, [](const Query& q) {
+                    return -static_cast<int>(CGAL::side_of_oriented_sphere(
+                        to_cgal(q[0]), to_cgal(q[1]), to_cgal(q[2]), to_cgal(q[3]), to_cgal(q[4])));
+                });
             });
-        });
     }
 }
 

@@ -68,7 +68,6 @@ const std::vector<Input>& inputs() {
     return all;
 }
 
-
 template <PredicateKernel K>
 void register_kernel(const K& k, bool every_family) {
     for (const Input& in : inputs()) {
@@ -79,20 +78,23 @@ void register_kernel(const K& k, bool every_family) {
                                  [&k](const Quad& q) { return to_int(k.orient2d(q.a, q.b, q.c)); });
         });
         benchmark::RegisterBenchmark(("incircle" + suffix).c_str(), [k, &in](benchmark::State& s) {
-            exidel::bench::cycle(s, in.incircle,
-                [&k](const Quad& q) { return to_int(k.incircle(q.a, q.b, q.c, q.d)); });
+            exidel::bench::cycle(s, in.incircle, [&k](const Quad& q) {
+                return to_int(k.incircle(q.a, q.b, q.c, q.d));
+            });
         });
-        benchmark::RegisterBenchmark(
-            ("incircle_cosine" + suffix).c_str(), [k, &in](benchmark::State& s) {
-                exidel::bench::cycle(s, in.incircle,
-                    [&k](const Quad& q) { return to_int(k.incircle_cosine(q.a, q.b, q.c, q.d)); });
-            });
+        benchmark::RegisterBenchmark(("incircle_cosine" + suffix).c_str(),
+                                     [k, &in](benchmark::State& s) {
+                                         exidel::bench::cycle(s, in.incircle, [&k](const Quad& q) {
+                                             return to_int(k.incircle_cosine(q.a, q.b, q.c, q.d));
+                                         });
+                                     });
         if (in.distance.empty()) continue;
-        benchmark::RegisterBenchmark(
-            ("compare_distance" + suffix).c_str(), [k, &in](benchmark::State& s) {
-                exidel::bench::cycle(s, in.distance,
-                    [&k](const Quad& q) { return to_int(k.compare_distance(q.a, q.b, q.c)); });
-            });
+        benchmark::RegisterBenchmark(("compare_distance" + suffix).c_str(),
+                                     [k, &in](benchmark::State& s) {
+                                         exidel::bench::cycle(s, in.distance, [&k](const Quad& q) {
+                                             return to_int(k.compare_distance(q.a, q.b, q.c));
+                                         });
+                                     });
     }
 }
 
@@ -174,32 +176,32 @@ using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
 // so this costs two loads. CGAL has no cosine form, so it has no incircle_cosine entry.
 void register_cgal() {
     for (const Input& in : inputs()) {
-        benchmark::RegisterBenchmark(("orient2d/" + in.name + "/cgal-epick").c_str(),
-                                     [&in](benchmark::State& s) {
-            exidel::bench::cycle(s, in.orient, [](const Quad& q) {
-                return static_cast<int>(CGAL::orientation(Epick::Point_2(q.a.x, q.a.y),
-                                                          Epick::Point_2(q.b.x, q.b.y),
-                                                          Epick::Point_2(q.c.x, q.c.y)));
+        benchmark::RegisterBenchmark(
+            ("orient2d/" + in.name + "/cgal-epick").c_str(), [&in](benchmark::State& s) {
+                exidel::bench::cycle(s, in.orient, [](const Quad& q) {
+                    return static_cast<int>(CGAL::orientation(Epick::Point_2(q.a.x, q.a.y),
+                                                              Epick::Point_2(q.b.x, q.b.y),
+                                                              Epick::Point_2(q.c.x, q.c.y)));
+                });
             });
-        });
-        benchmark::RegisterBenchmark(("incircle/" + in.name + "/cgal-epick").c_str(),
-                                     [&in](benchmark::State& s) {
-            exidel::bench::cycle(s, in.incircle, [](const Quad& q) {
-                return static_cast<int>(CGAL::side_of_oriented_circle(
-                    Epick::Point_2(q.a.x, q.a.y), Epick::Point_2(q.b.x, q.b.y),
-                    Epick::Point_2(q.c.x, q.c.y), Epick::Point_2(q.d.x, q.d.y)));
+        benchmark::RegisterBenchmark(
+            ("incircle/" + in.name + "/cgal-epick").c_str(), [&in](benchmark::State& s) {
+                exidel::bench::cycle(s, in.incircle, [](const Quad& q) {
+                    return static_cast<int>(CGAL::side_of_oriented_circle(
+                        Epick::Point_2(q.a.x, q.a.y), Epick::Point_2(q.b.x, q.b.y),
+                        Epick::Point_2(q.c.x, q.c.y), Epick::Point_2(q.d.x, q.d.y)));
+                });
             });
-        });
         if (in.distance.empty()) continue;
         // compare_distance_to_point(c, p, q) is LARGER when p is farther from c: our sign.
-        benchmark::RegisterBenchmark(("compare_distance/" + in.name + "/cgal-epick").c_str(),
-                                     [&in](benchmark::State& s) {
-            exidel::bench::cycle(s, in.distance, [](const Quad& q) {
-                return static_cast<int>(CGAL::compare_distance_to_point(
-                    Epick::Point_2(q.a.x, q.a.y), Epick::Point_2(q.b.x, q.b.y),
-                    Epick::Point_2(q.c.x, q.c.y)));
+        benchmark::RegisterBenchmark(
+            ("compare_distance/" + in.name + "/cgal-epick").c_str(), [&in](benchmark::State& s) {
+                exidel::bench::cycle(s, in.distance, [](const Quad& q) {
+                    return static_cast<int>(CGAL::compare_distance_to_point(
+                        Epick::Point_2(q.a.x, q.a.y), Epick::Point_2(q.b.x, q.b.y),
+                        Epick::Point_2(q.c.x, q.c.y)));
+                });
             });
-        });
     }
 }
 

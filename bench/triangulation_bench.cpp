@@ -28,8 +28,9 @@
 //                 with atomic counters (so worker threads are counted too), using
 //                 malloc_usable_size of each block, so allocator rounding is included,
 //                 plus the mappings exidel makes itself for its large internal arrays
-//                 (whole 2 MiB pages; detail::set_mapped_fresh_hook). Not seen: GMP's own malloc calls (exact kernel) and thread stacks. The
-//                 input vector exists before the run and is not counted.
+//                 (whole 2 MiB pages; detail::set_mapped_fresh_hook). Not seen: GMP's own malloc
+//                 calls (exact kernel) and thread stacks. The input vector exists before the run
+//                 and is not counted.
 // Every benchmark run starts from the same allocator state: malloc_trim(0) before the
 // timed loop returns every free page of the heap to the kernel. Without it a run inherits
 // whatever the runs before it left mapped, and the order of the runs moved the times by
@@ -111,16 +112,14 @@ std::atomic<std::size_t> peak_bytes{0};
 
 void raise_peak(std::size_t now) {
     std::size_t peak = peak_bytes.load(std::memory_order_relaxed);
-    while (now > peak && !peak_bytes.compare_exchange_weak(peak, now, std::memory_order_relaxed)) {
-    }
+    while (now > peak && !peak_bytes.compare_exchange_weak(peak, now, std::memory_order_relaxed)) {}
 }
 
 void* counted_alloc(std::size_t size) {
     void* p = std::malloc(size == 0 ? 1 : size);
     if (!p) throw std::bad_alloc();
-    const std::size_t now =
-        live_bytes.fetch_add(malloc_usable_size(p), std::memory_order_relaxed) +
-        malloc_usable_size(p);
+    const std::size_t now = live_bytes.fetch_add(malloc_usable_size(p), std::memory_order_relaxed) +
+                            malloc_usable_size(p);
     raise_peak(now + mapped_bytes.load(std::memory_order_relaxed));
     return p;
 }
@@ -173,7 +172,8 @@ std::vector<Point2> grid(std::size_t n, bench::Rng& rng, At at) {
     std::vector<Point2> p;
     p.reserve(s * s);
     for (std::size_t i = 0; i < s; ++i) {
-        for (std::size_t j = 0; j < s; ++j) p.push_back(at(static_cast<double>(i), static_cast<double>(j)));
+        for (std::size_t j = 0; j < s; ++j)
+            p.push_back(at(static_cast<double>(i), static_cast<double>(j)));
     }
     std::shuffle(p.begin(), p.end(), rng);
     return p;
@@ -194,7 +194,8 @@ std::vector<Point2> generate(const std::string& name, std::size_t n) {
         for (Point2& c : centre) c = {bench::unit(rng), bench::unit(rng)};
         std::normal_distribution<double> g(0.0, 1e-3);
         for (std::size_t i = 0; i < n; ++i) {
-            const Point2& c = centre[static_cast<std::size_t>(bench::integer(rng, 0, clusters - 1))];
+            const Point2& c =
+                centre[static_cast<std::size_t>(bench::integer(rng, 0, clusters - 1))];
             p.push_back({c.x + g(rng), c.y + g(rng)});
         }
     } else if (name == "grid") {
@@ -279,13 +280,14 @@ void exidel_bench(benchmark::State& state, const std::string& name, const std::s
             r.failure = counted.failure->message;
             return r;
         }
-        r.flips_per_pt =
-            static_cast<double>(counted.counters.flips()) / static_cast<double>(count);
+        r.flips_per_pt = static_cast<double>(counted.counters.flips()) / static_cast<double>(count);
         r.strips = static_cast<double>(counted.strips);
         // The label names the strategy that ran, for an algorithm that takes one.
-        const bool takes_order = std::any_of(
-            delaunay::algorithms().begin(), delaunay::algorithms().end(),
-            [&](const delaunay::AlgorithmInfo& a) { return a.id == options.algorithm && a.takes_order; });
+        const bool takes_order =
+            std::any_of(delaunay::algorithms().begin(), delaunay::algorithms().end(),
+                        [&](const delaunay::AlgorithmInfo& a) {
+                            return a.id == options.algorithm && a.takes_order;
+                        });
         if (takes_order) r.ran = std::string(delaunay::to_string(counted.strategy));
         r.bytes_per_pt = static_cast<double>(peak_extra_bytes([&] {
                              benchmark::DoNotOptimize(delaunay::triangulate(pts, K{}, options));
@@ -374,19 +376,22 @@ void add(const std::string& in_name, std::size_t n, bool lexicographic, bool rad
         // order is, and runs where it runs.
         if (a.id == delaunay::Algorithm::lawson && !lexicographic) continue;
         if (!a.takes_order) {
-            add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::automatic, 1, a.id);
+            add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::automatic, 1,
+                                       a.id);
             continue;
         }
-        if (lexicographic) add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::lexicographic, 1, a.id);
-        if (radial) add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::radial, 1, a.id);
+        if (lexicographic)
+            add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::lexicographic, 1,
+                                       a.id);
+        if (radial)
+            add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::radial, 1, a.id);
         add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::strips, 1, a.id);
         add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::strips, 2, a.id);
         add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::automatic, 1, a.id);
         add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::automatic, 2, a.id);
     }
-    reg(prefix + "cgal-epick", n, [=](benchmark::State& s) {
-        cgal_bench(s, prefix + "cgal-epick", in_name, n);
-    });
+    reg(prefix + "cgal-epick", n,
+        [=](benchmark::State& s) { cgal_bench(s, prefix + "cgal-epick", in_name, n); });
 }
 
 }  // namespace
@@ -406,9 +411,11 @@ int main(int argc, char** argv) {
         } else if (a.starts_with("--exidel_strip_tiles=")) {
             strip_tiles = std::strtoull(a.substr(21).data(), nullptr, 10);
         } else {
-            std::fprintf(stderr, "unknown option %s (besides Google Benchmark's: "
-                                 "--exidel_slow, --exidel_huge, --exidel_giant, "
-                                 "--exidel_strip_tiles=N)\n", argv[i]);
+            std::fprintf(stderr,
+                         "unknown option %s (besides Google Benchmark's: "
+                         "--exidel_slow, --exidel_huge, --exidel_giant, "
+                         "--exidel_strip_tiles=N)\n",
+                         argv[i]);
             return 2;
         }
     }
@@ -423,8 +430,7 @@ int main(int argc, char** argv) {
         const std::string_view name = in;
         for (std::size_t n : {10'000u, 100'000u, 1'000'000u}) {
             const bool big = n == 1'000'000;
-            const bool lexicographic =
-                name != "parabola-asc" && (name != "grid" || !big || slow);
+            const bool lexicographic = name != "parabola-asc" && (name != "grid" || !big || slow);
             add(in, n, lexicographic, true);
             if (name == "uniform") {
                 const std::string prefix = "tri/uniform/" + std::to_string(n) + "/";
@@ -440,9 +446,8 @@ int main(int argc, char** argv) {
         const std::string prefix = "tri/uniform/" + std::to_string(n) + "/";
         add_exidel<AdaptiveKernel>(prefix, "adaptive", "uniform", n, Strategy::automatic, 1);
         add_exidel<AdaptiveKernel>(prefix, "adaptive", "uniform", n, Strategy::automatic, 2);
-        reg(prefix + "cgal-epick", n, [=](benchmark::State& s) {
-            cgal_bench(s, prefix + "cgal-epick", "uniform", n);
-        });
+        reg(prefix + "cgal-epick", n,
+            [=](benchmark::State& s) { cgal_bench(s, prefix + "cgal-epick", "uniform", n); });
     }
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();

@@ -34,8 +34,9 @@ namespace {
 using namespace exidel;
 using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
 using DT = CGAL::Delaunay_triangulation_2<Epick>;
-using VD = CGAL::Voronoi_diagram_2<DT, CGAL::Delaunay_triangulation_adaptation_traits_2<DT>,
-                                   CGAL::Delaunay_triangulation_caching_degeneracy_removal_policy_2<DT>>;
+using VD =
+    CGAL::Voronoi_diagram_2<DT, CGAL::Delaunay_triangulation_adaptation_traits_2<DT>,
+                            CGAL::Delaunay_triangulation_caching_degeneracy_removal_policy_2<DT>>;
 using Clock = std::chrono::steady_clock;
 
 double ms(Clock::time_point a, Clock::time_point b) {
@@ -72,12 +73,18 @@ int main(int argc, char** argv) {
     unsigned threads = 1;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string a = argv[i];
-        if (a == "--n") n = std::strtoull(argv[i + 1], nullptr, 10);
-        else if (a == "--reps") reps = std::atoi(argv[i + 1]);
-        else if (a == "--input") input = argv[i + 1];
-        else if (a == "--threads") threads = static_cast<unsigned>(std::atoi(argv[i + 1]));
+        if (a == "--n")
+            n = std::strtoull(argv[i + 1], nullptr, 10);
+        else if (a == "--reps")
+            reps = std::atoi(argv[i + 1]);
+        else if (a == "--input")
+            input = argv[i + 1];
+        else if (a == "--threads")
+            threads = static_cast<unsigned>(std::atoi(argv[i + 1]));
         else {
-            std::fprintf(stderr, "usage: %s [--n N] [--reps R] [--input uniform|grid] [--threads T]\n", argv[0]);
+            std::fprintf(stderr,
+                         "usage: %s [--n N] [--reps R] [--input uniform|grid] [--threads T]\n",
+                         argv[0]);
             return 2;
         }
     }
@@ -94,7 +101,8 @@ int main(int argc, char** argv) {
             const delaunay::Result res = delaunay::triangulate(points, AdaptiveKernel{}, options);
             const auto t1 = Clock::now();
             if (!res.ok()) return 1;
-            const delaunay::VoronoiDiagram d = delaunay::voronoi(points, res.triangulation, AdaptiveKernel{}, threads);
+            const delaunay::VoronoiDiagram d =
+                delaunay::voronoi(points, res.triangulation, AdaptiveKernel{}, threads);
             const auto t2 = Clock::now();
             tri_ms.push_back(ms(t0, t1));
             vor_ms.push_back(ms(t1, t2));
@@ -119,7 +127,8 @@ int main(int argc, char** argv) {
             const auto t1 = Clock::now();
             std::vector<Epick::Point_2> duals;
             duals.reserve(dt.number_of_faces());
-            for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) duals.push_back(dt.dual(f));
+            for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f)
+                duals.push_back(dt.dual(f));
             const auto t2 = Clock::now();
             cgal_tri_ms.push_back(ms(t0, t1));
             cgal_dual_ms.push_back(ms(t1, t2));
@@ -142,22 +151,27 @@ int main(int argc, char** argv) {
     const double tri = median(tri_ms), vor = median(vor_ms);
     const double ctri = median(cgal_tri_ms), cdual = median(cgal_dual_ms), cvd = median(cgal_vd_ms);
     const double total_stages = double(stages[0] + stages[1] + stages[2]);
-    std::printf("input %s, n = %zu, exidel on %u thread(s), medians of %d runs (ms)\n", input.c_str(), n,
-                threads, reps);
+    std::printf("input %s, n = %zu, exidel on %u thread(s), medians of %d runs (ms)\n",
+                input.c_str(), n, threads, reps);
     std::printf("exidel triangulate          %9.1f   (%zu triangles)\n", tri, triangles);
-    std::printf("exidel voronoi step         %9.1f   (%zu vertices; %llu cocircular tests, %llu merges)\n",
-                vor, vertices, static_cast<unsigned long long>(tests), static_cast<unsigned long long>(merges));
+    std::printf(
+        "exidel voronoi step         %9.1f   (%zu vertices; %llu cocircular tests, %llu merges)\n",
+        vor, vertices, static_cast<unsigned long long>(tests),
+        static_cast<unsigned long long>(merges));
     std::printf("  of which circumcentres    %9.1f   (timed apart; the rest: merging and cells)\n",
                 median(centre_ms));
     std::printf("exidel total                %9.1f\n", tri + vor);
     std::printf("CGAL Epick triangulate      %9.1f\n", ctri);
     std::printf("CGAL dual() of every face   %9.1f\n", cdual);
     std::printf("CGAL total (tri + duals)    %9.1f\n", ctri + cdual);
-    std::printf("CGAL Voronoi_diagram_2 walk %9.1f   (%zu vertices, from the triangulation)\n", cvd, cgal_vd_vertices);
+    std::printf("CGAL Voronoi_diagram_2 walk %9.1f   (%zu vertices, from the triangulation)\n", cvd,
+                cgal_vd_vertices);
     std::printf("circumcentres decided: floating %.4f, double-word %.4f, exact %.6f\n",
                 stages[0] / total_stages, stages[1] / total_stages, stages[2] / total_stages);
-    std::printf("goal 1: exidel total / exidel triangulate = %.2fx (goal <= 1.5x)\n", (tri + vor) / tri);
-    std::printf("goal 2: exidel total / CGAL total          = %.2fx (goal < 1x)\n", (tri + vor) / (ctri + cdual));
+    std::printf("goal 1: exidel total / exidel triangulate = %.2fx (goal <= 1.5x)\n",
+                (tri + vor) / tri);
+    std::printf("goal 2: exidel total / CGAL total          = %.2fx (goal < 1x)\n",
+                (tri + vor) / (ctri + cdual));
     std::printf("        exidel voronoi step / CGAL duals    = %.2fx\n", vor / cdual);
     return 0;
 }

@@ -53,9 +53,8 @@ Options:
 )";
 
 int run(const std::string& points_path, const std::string& tri_path,
-        std::optional<io::PointFormat> input_format,
-        std::optional<io::TriangulationFormat> format, const std::optional<io::Columns>& columns,
-        const CommandLine& cli) {
+        std::optional<io::PointFormat> input_format, std::optional<io::TriangulationFormat> format,
+        const std::optional<io::Columns>& columns, const CommandLine& cli) {
     const io::PointFormat pf = input_format.value_or(io::point_format_from_path(points_path));
     if (columns && pf != io::PointFormat::xy) {
         return cli.usage_error("--columns applies to xy input, not to " +
@@ -71,9 +70,9 @@ int run(const std::string& points_path, const std::string& tri_path,
     delaunay::Triangulation tri;
     std::string reading = points_path;
     try {
-        points = io::parse_point_file(io::FileBytes(points_path).view(), pf,
-                                      io::ReadOptions{columns})
-                     .points;
+        points =
+            io::parse_point_file(io::FileBytes(points_path).view(), pf, io::ReadOptions{columns})
+                .points;
         reading = tri_path;
         tri = io::read_triangulation(io::FileBytes(tri_path).view(), *tf, points);
     } catch (const io::ReadError& e) {
@@ -95,8 +94,8 @@ int run(const std::string& points_path, const std::string& tri_path,
         return exit_failure;
     }
     std::cout << "certified: the Delaunay triangulation of " << points.size() << " points ("
-              << points.size() - tri.duplicates.size() << " distinct), "
-              << tri.triangle_count() << " triangles\n";
+              << points.size() - tri.duplicates.size() << " distinct), " << tri.triangle_count()
+              << " triangles\n";
     return exit_ok;
 }
 
@@ -113,7 +112,8 @@ int certify_command(std::span<const std::string_view> args) {
     app.add_option_function<std::string>("--input-format", [&](const std::string& v) {
         input_format = io::point_format_from_name(v);
         if (!input_format) {
-            throw std::invalid_argument("--input-format takes xy, json, node or f64, got '" + v + "'");
+            throw std::invalid_argument("--input-format takes xy, json, node or f64, got '" + v +
+                                        "'");
         }
     });
     app.add_option_function<std::string>("-f,--format", [&](const std::string& v) {

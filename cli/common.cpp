@@ -100,9 +100,11 @@ Triangulated triangulate_points(const AnyKernel& kernel, std::span<const Point2>
             t.exact_kernel = std::decay_t<decltype(k)>::is_exact;
             const Clock::time_point start = Clock::now();
             if (counters) {
-                t.result = delaunay::triangulate<delaunay::Instrumentation::counters>(points, k, options);
+                t.result =
+                    delaunay::triangulate<delaunay::Instrumentation::counters>(points, k, options);
             } else {
-                t.result = delaunay::triangulate<delaunay::Instrumentation::off>(points, k, options);
+                t.result =
+                    delaunay::triangulate<delaunay::Instrumentation::off>(points, k, options);
             }
             t.ms = ms_since(start);
         },

@@ -122,8 +122,8 @@ std::optional<Format> output_format(const std::optional<Format>& given,
     if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return fallback;
     const std::optional<Format> f = from_path(out);
     if (!f) {
-        error = "cannot tell the output format from '" + out + "' (extensions: " +
-                std::string(extensions) + "); give --format";
+        error = "cannot tell the output format from '" + out +
+                "' (extensions: " + std::string(extensions) + "); give --format";
     }
     return f;
 }

@@ -99,7 +99,8 @@ Options:
                        outcomes per family, method and policy, the fixtures
 )";
 
-constexpr std::string_view common_help_head = R"(  --families LIST      family names separated by commas, 'degenerate' (every family
+constexpr std::string_view common_help_head =
+    R"(  --families LIST      family names separated by commas, 'degenerate' (every family
                        but uniform, uniform_scaled and wide_exponents) or 'all'
                        (default all):
                        )";
@@ -124,7 +125,8 @@ std::string common_help() {
     std::string families;
     for (const testing::FamilyInfo& f : testing::all_families()) {
         if (!families.empty()) families += ", ";
-        if (families.size() - families.rfind('\n') + f.name.size() > 56) families += "\n                       ";
+        if (families.size() - families.rfind('\n') + f.name.size() > 56)
+            families += "\n                       ";
         families += f.name;
     }
     return std::string(common_help_head) + families + std::string(common_help_tail);
@@ -132,7 +134,8 @@ std::string common_help() {
 
 std::string predicates_help() {
     return std::string(predicates_help_head) + common_help() +
-           "\nExit status: 0 no disagreement, 1 disagreements (or an I/O error), 2 bad options.\n\nKernels:\n" +
+           "\nExit status: 0 no disagreement, 1 disagreements (or an I/O error), 2 bad "
+           "options.\n\nKernels:\n" +
            kernel_help();
 }
 
@@ -153,13 +156,13 @@ std::uint64_t parse_count(const std::string& text, const std::string& name) {
         if (v >= 1 && v <= limit) return v;
     } else {
         double d = 0;
-        if (auto [q, ec2] = std::from_chars(text.data(), end, d); ec2 == std::errc() && q == end &&
-                                                                   d >= 1 && d <= double(limit) &&
-                                                                   d == std::floor(d)) {
+        if (auto [q, ec2] = std::from_chars(text.data(), end, d);
+            ec2 == std::errc() && q == end && d >= 1 && d <= double(limit) && d == std::floor(d)) {
             return std::uint64_t(d);
         }
     }
-    throw std::invalid_argument(name + " takes a whole number from 1 to 2^62 (1000, 1e9), got '" + text + "'");
+    throw std::invalid_argument(name + " takes a whole number from 1 to 2^62 (1000, 1e9), got '" +
+                                text + "'");
 }
 
 std::vector<std::string> split_list(const std::string& s) {
@@ -180,8 +183,9 @@ std::vector<Predicate> parse_predicates(const std::string& list) {
     for (const std::string& name : split_list(list)) {
         const std::optional<Predicate> p = predicate_from_name(name);
         if (!p) {
-            throw std::invalid_argument("--predicates: unknown predicate '" + name +
-                                        "' (orient2d, incircle, incircle_cosine, compare_distance or all)");
+            throw std::invalid_argument(
+                "--predicates: unknown predicate '" + name +
+                "' (orient2d, incircle, incircle_cosine, compare_distance or all)");
         }
         if (std::find(out.begin(), out.end(), *p) == out.end()) out.push_back(*p);
     }
@@ -197,12 +201,14 @@ void print_report(std::ostream& out, const research::PredicateFuzzResult& r) {
     const research::PredicateFuzzOptions& o = r.options;
     for (const research::Disagreement& d : r.reported) {
         const std::size_t n = point_count(d.predicate);
-        out << "# query " << d.index << " (" << testing::family_name(d.family) << "): " << o.kernel << ' '
-            << sign_text(d.kernel_sign) << ", " << o.reference << ' ' << sign_text(d.reference_sign)
-            << "; as drawn: " << research::query_line(d.predicate, std::span(d.query.data(), n)) << '\n'
-            << research::query_line(d.predicate, std::span(d.shrunk.data(), n)) << "  # " << o.kernel << ' '
-            << sign_text(d.shrunk_kernel_sign) << ", " << o.reference << ' ' << sign_text(d.shrunk_reference_sign)
-            << " (" << d.shrink_steps << " shrinks)\n";
+        out << "# query " << d.index << " (" << testing::family_name(d.family) << "): " << o.kernel
+            << ' ' << sign_text(d.kernel_sign) << ", " << o.reference << ' '
+            << sign_text(d.reference_sign)
+            << "; as drawn: " << research::query_line(d.predicate, std::span(d.query.data(), n))
+            << '\n'
+            << research::query_line(d.predicate, std::span(d.shrunk.data(), n)) << "  # "
+            << o.kernel << ' ' << sign_text(d.shrunk_kernel_sign) << ", " << o.reference << ' '
+            << sign_text(d.shrunk_reference_sign) << " (" << d.shrink_steps << " shrinks)\n";
     }
     // One line per family: its queries and disagreements, then the disagreements per
     // predicate (the predicates share a family's queries in turn).
@@ -218,22 +224,28 @@ void print_report(std::ostream& out, const research::PredicateFuzzResult& r) {
             sum.disagreements += n.disagreements;
             const std::string count = std::to_string(n.disagreements);
             const std::size_t width = predicate_name(o.predicates[p]).size();
-            per_predicate += "  " + std::string(width > count.size() ? width - count.size() : 0, ' ') + count;
+            per_predicate +=
+                "  " + std::string(width > count.size() ? width - count.size() : 0, ' ') + count;
         }
         char line[120];
-        std::snprintf(line, sizeof line, "# %-20s %12llu %14llu", std::string(testing::family_name(o.families[f])).c_str(),
-                      static_cast<unsigned long long>(sum.queries), static_cast<unsigned long long>(sum.disagreements));
+        std::snprintf(line, sizeof line, "# %-20s %12llu %14llu",
+                      std::string(testing::family_name(o.families[f])).c_str(),
+                      static_cast<unsigned long long>(sum.queries),
+                      static_cast<unsigned long long>(sum.disagreements));
         out << line << per_predicate << '\n';
     }
     const double rate = r.seconds > 0 ? double(r.total.queries - r.resumed_queries) / r.seconds : 0;
     char line[240];
-    std::snprintf(line, sizeof line,
-                  "# %llu queries, %llu disagreements (%s against %s), %.1f s, %.3g queries/s on %d rank%s x %u "
-                  "thread%s%s\n",
-                  static_cast<unsigned long long>(r.total.queries),
-                  static_cast<unsigned long long>(r.total.disagreements), o.kernel.c_str(), o.reference.c_str(),
-                  r.seconds, rate, r.ranks, r.ranks == 1 ? "" : "s", o.jobs, o.jobs == 1 ? "" : "s",
-                  r.resumed_queries ? (", " + std::to_string(r.resumed_queries) + " resumed").c_str() : "");
+    std::snprintf(
+        line, sizeof line,
+        "# %llu queries, %llu disagreements (%s against %s), %.1f s, %.3g queries/s on %d rank%s x "
+        "%u "
+        "thread%s%s\n",
+        static_cast<unsigned long long>(r.total.queries),
+        static_cast<unsigned long long>(r.total.disagreements), o.kernel.c_str(),
+        o.reference.c_str(), r.seconds, rate, r.ranks, r.ranks == 1 ? "" : "s", o.jobs,
+        o.jobs == 1 ? "" : "s",
+        r.resumed_queries ? (", " + std::to_string(r.resumed_queries) + " resumed").c_str() : "");
     out << line;
 }
 
@@ -255,8 +267,10 @@ struct Common {
         });
         app.add_option_function<std::string>("--seed", [this](const std::string& v) {
             const char* end = v.data() + v.size();
-            if (auto [p, ec] = std::from_chars(v.data(), end, seed); ec != std::errc() || p != end) {
-                throw std::invalid_argument("--seed takes a whole number from 0 to 2^64 - 1, got '" + v + "'");
+            if (auto [p, ec] = std::from_chars(v.data(), end, seed);
+                ec != std::errc() || p != end) {
+                throw std::invalid_argument(
+                    "--seed takes a whole number from 0 to 2^64 - 1, got '" + v + "'");
             }
         });
         app.add_option_function<std::string>("-j,--jobs", [this](const std::string& v) {
@@ -268,7 +282,8 @@ struct Common {
             reports = v == "0" ? 0 : std::size_t(parse_count(v, "--reports"));
         });
         app.add_option("--summary", summary);
-        app.add_option_function<std::string>("--checkpoint", [this](const std::string& v) { checkpoint = v; });
+        app.add_option_function<std::string>("--checkpoint",
+                                             [this](const std::string& v) { checkpoint = v; });
         app.add_flag("--resume", resume);
         app.add_flag("--keep-checkpoint", keep_checkpoint);
         app.add_flag("--no-checkpoint", no_checkpoint);
@@ -277,7 +292,8 @@ struct Common {
 
     /// After parsing: the usage error, if any.
     std::optional<std::string> check(Team& team) {
-        if (no_checkpoint && (resume || keep_checkpoint)) return "--no-checkpoint with --resume or --keep-checkpoint";
+        if (no_checkpoint && (resume || keep_checkpoint))
+            return "--no-checkpoint with --resume or --keep-checkpoint";
         if (no_checkpoint) checkpoint.clear();
         std::string error;
         if (!parse_kernel(kernel, error)) return error;
@@ -320,7 +336,8 @@ struct Common {
 /// Runs a campaign, turning its errors into exit statuses: bad options and checkpoints
 /// (the same on every rank) are usage errors; anything else ends the whole MPI job.
 template <class Run>
-std::optional<int> guarded(const CommandLine& cli, const std::string& command, Team& team, Run run) {
+std::optional<int> guarded(const CommandLine& cli, const std::string& command, Team& team,
+                           Run run) {
     try {
         run();
     } catch (const std::invalid_argument& e) {
@@ -339,10 +356,11 @@ int fuzz_predicates_command(std::span<const std::string_view> args, Team& team) 
     research::PredicateFuzzOptions o;
     common.declare(cli.app);
     cli.app.add_option("-r,--reference", o.reference);
-    cli.app.add_option_function<std::string>("--predicates,--predicate",
-                                             [&o](const std::string& v) { o.predicates = parse_predicates(v); });
-    cli.app.add_option_function<std::string>("-n,--queries",
-                                             [&o](const std::string& v) { o.queries = parse_count(v, "--queries"); });
+    cli.app.add_option_function<std::string>(
+        "--predicates,--predicate",
+        [&o](const std::string& v) { o.predicates = parse_predicates(v); });
+    cli.app.add_option_function<std::string>(
+        "-n,--queries", [&o](const std::string& v) { o.queries = parse_count(v, "--queries"); });
     if (const std::optional<int> status = cli.parse(args)) return *status;
     if (const auto error = common.check(team)) return cli.usage_error(*error);
     std::string error;
@@ -350,7 +368,8 @@ int fuzz_predicates_command(std::span<const std::string_view> args, Team& team) 
     common.apply(o);
 
     research::PredicateFuzzResult r;
-    if (auto status = guarded(cli, "fuzz predicates", team, [&] { r = research::fuzz_predicates(o, team); })) {
+    if (auto status = guarded(cli, "fuzz predicates", team,
+                              [&] { r = research::fuzz_predicates(o, team); })) {
         return *status;
     }
     if (team.rank() != 0) return exit_ok;  // rank 0 reports and decides the status
@@ -364,7 +383,8 @@ std::pair<std::size_t, std::size_t> parse_sizes(const std::string& v) {
     const std::size_t dash = v.find('-');
     const auto number = [&v](std::string_view t) {
         std::size_t n = 0;
-        if (auto [p, ec] = std::from_chars(t.data(), t.data() + t.size(), n); ec != std::errc() || p != t.data() + t.size()) {
+        if (auto [p, ec] = std::from_chars(t.data(), t.data() + t.size(), n);
+            ec != std::errc() || p != t.data() + t.size()) {
             throw std::invalid_argument("--sizes takes MIN-MAX (3-100) or N, got '" + v + "'");
         }
         return n;
@@ -384,7 +404,8 @@ std::vector<delaunay::InCirclePolicy> parse_policies(const std::string& list) {
         } else if (name == "cosine") {
             p = delaunay::InCirclePolicy::cosine;
         } else {
-            throw std::invalid_argument("--incircle takes determinant, cosine or all, got '" + name + "'");
+            throw std::invalid_argument("--incircle takes determinant, cosine or all, got '" +
+                                        name + "'");
         }
         if (std::find(out.begin(), out.end(), p) == out.end()) out.push_back(p);
     }
@@ -395,43 +416,52 @@ std::vector<delaunay::InCirclePolicy> parse_policies(const std::string& list) {
 void print_report(std::ostream& out, const research::TriangulationFuzzResult& r) {
     const research::TriangulationFuzzOptions& o = r.options;
     const auto describe = [](const research::Classification& c) {
-        return std::string(research::to_string(c.outcome)) + (c.detail.empty() ? "" : " (" + c.detail + ")");
+        return std::string(research::to_string(c.outcome)) +
+               (c.detail.empty() ? "" : " (" + c.detail + ")");
     };
     for (const research::TriangulationFinding& f : r.reported) {
-        out << "# unit " << f.index << " (" << testing::family_name(f.family) << ", " << research::method_label(f.method)
-            << ", " << research::policy_name(f.policy) << "): " << describe(f.outcome) << ", " << f.points
-            << " points shrunk to " << f.shrunk.size() << " (" << describe(f.shrunk_outcome) << ")"
+        out << "# unit " << f.index << " (" << testing::family_name(f.family) << ", "
+            << research::method_label(f.method) << ", " << research::policy_name(f.policy)
+            << "): " << describe(f.outcome) << ", " << f.points << " points shrunk to "
+            << f.shrunk.size() << " (" << describe(f.shrunk_outcome) << ")"
             << (f.file.empty() ? "" : ": " + (o.out / f.file).string()) << '\n';
     }
-    const std::size_t outcomes = research::all_outcomes.size(), runs = r.methods.size() * o.policies.size();
+    const std::size_t outcomes = research::all_outcomes.size(),
+                      runs = r.methods.size() * o.policies.size();
     std::string head = "# family                triangulations";
-    for (research::Outcome oc : research::all_outcomes) head += "  " + std::string(research::to_string(oc));
+    for (research::Outcome oc : research::all_outcomes)
+        head += "  " + std::string(research::to_string(oc));
     out << head << '\n';
     for (std::size_t f = 0; f < o.families.size(); ++f) {
         std::vector<std::uint64_t> sum(outcomes);
-        for (std::size_t i = f * runs * outcomes; i < (f + 1) * runs * outcomes; ++i) sum[i % outcomes] += r.counts[i];
+        for (std::size_t i = f * runs * outcomes; i < (f + 1) * runs * outcomes; ++i)
+            sum[i % outcomes] += r.counts[i];
         char line[120];
         std::uint64_t total = 0;
         for (std::uint64_t n : sum) total += n;
-        std::snprintf(line, sizeof line, "# %-20s %15llu", std::string(testing::family_name(o.families[f])).c_str(),
+        std::snprintf(line, sizeof line, "# %-20s %15llu",
+                      std::string(testing::family_name(o.families[f])).c_str(),
                       static_cast<unsigned long long>(total));
         out << line;
         for (std::size_t k = 0; k < outcomes; ++k) {
             const std::string count = std::to_string(sum[k]);
             const std::size_t width = research::to_string(research::all_outcomes[k]).size();
-            out << "  " << std::string(width > count.size() ? width - count.size() : 0, ' ') << count;
+            out << "  " << std::string(width > count.size() ? width - count.size() : 0, ' ')
+                << count;
         }
         out << '\n';
     }
     const double rate = r.seconds > 0 ? double(r.triangulations - r.resumed) / r.seconds : 0;
     char line[260];
-    std::snprintf(line, sizeof line,
-                  "# %llu triangulations (%llu sets x %zu methods x %zu policies, %zu-%zu points, kernel %s): %llu "
-                  "wrong, %llu problems, %.1f s, %.3g triangulations/s on %d rank%s x %u thread%s\n",
-                  static_cast<unsigned long long>(r.triangulations), static_cast<unsigned long long>(o.sets),
-                  r.methods.size(), o.policies.size(), o.min_points, o.max_points, o.kernel.c_str(),
-                  static_cast<unsigned long long>(r.wrong), static_cast<unsigned long long>(r.problems), r.seconds,
-                  rate, r.ranks, r.ranks == 1 ? "" : "s", o.jobs, o.jobs == 1 ? "" : "s");
+    std::snprintf(
+        line, sizeof line,
+        "# %llu triangulations (%llu sets x %zu methods x %zu policies, %zu-%zu points, kernel "
+        "%s): %llu "
+        "wrong, %llu problems, %.1f s, %.3g triangulations/s on %d rank%s x %u thread%s\n",
+        static_cast<unsigned long long>(r.triangulations), static_cast<unsigned long long>(o.sets),
+        r.methods.size(), o.policies.size(), o.min_points, o.max_points, o.kernel.c_str(),
+        static_cast<unsigned long long>(r.wrong), static_cast<unsigned long long>(r.problems),
+        r.seconds, rate, r.ranks, r.ranks == 1 ? "" : "s", o.jobs, o.jobs == 1 ? "" : "s");
     out << line;
 }
 
@@ -441,24 +471,28 @@ int fuzz_triangulations_command(std::span<const std::string_view> args, Team& te
     research::TriangulationFuzzOptions o;
     o.out = "exidel-fuzz-fixtures";
     common.declare(cli.app);
-    cli.app.add_option_function<std::string>("-a,--algorithms,--algorithm", [&o](const std::string& v) {
-        o.algorithms = v == "all" ? std::vector<delaunay::Algorithm>{} : research::parse_algorithms(v);
-    });
-    cli.app.add_option_function<std::string>("--orders,--order", [&o](const std::string& v) {
-        o.orders = research::parse_orders(v);
-    });
-    cli.app.add_option_function<std::string>("--incircle", [&o](const std::string& v) { o.policies = parse_policies(v); });
+    cli.app.add_option_function<std::string>(
+        "-a,--algorithms,--algorithm", [&o](const std::string& v) {
+            o.algorithms =
+                v == "all" ? std::vector<delaunay::Algorithm>{} : research::parse_algorithms(v);
+        });
+    cli.app.add_option_function<std::string>(
+        "--orders,--order", [&o](const std::string& v) { o.orders = research::parse_orders(v); });
+    cli.app.add_option_function<std::string>(
+        "--incircle", [&o](const std::string& v) { o.policies = parse_policies(v); });
     cli.app.add_option_function<std::string>("--sizes", [&o](const std::string& v) {
         std::tie(o.min_points, o.max_points) = parse_sizes(v);
     });
-    cli.app.add_option_function<std::string>("-n,--sets", [&o](const std::string& v) { o.sets = parse_count(v, "--sets"); });
+    cli.app.add_option_function<std::string>(
+        "-n,--sets", [&o](const std::string& v) { o.sets = parse_count(v, "--sets"); });
     cli.app.add_option_function<std::string>("--out", [&o](const std::string& v) { o.out = v; });
     if (const std::optional<int> status = cli.parse(args)) return *status;
     if (const auto error = common.check(team)) return cli.usage_error(*error);
     common.apply(o);
 
     research::TriangulationFuzzResult r;
-    if (auto status = guarded(cli, "fuzz triangulations", team, [&] { r = research::fuzz_triangulations(o, team); })) {
+    if (auto status = guarded(cli, "fuzz triangulations", team,
+                              [&] { r = research::fuzz_triangulations(o, team); })) {
         return *status;
     }
     if (team.rank() != 0) return exit_ok;
@@ -478,7 +512,8 @@ int fuzz_command(std::span<const std::string_view> args) {
                      : args[0] == "triangulations" ? &fuzz_triangulations_command
                                                    : nullptr;
     if (!run) {
-        std::cerr << "exidel fuzz: unknown campaign '" << args[0] << "' (predicates or triangulations)\n";
+        std::cerr << "exidel fuzz: unknown campaign '" << args[0]
+                  << "' (predicates or triangulations)\n";
         return exit_usage;
     }
     Membership membership = join_team();

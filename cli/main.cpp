@@ -61,7 +61,8 @@ void print_version(std::ostream& os) {
        << ", Boost " << b.boost << "\nlong double: " << b.long_double << "\nkernels:";
     for (const std::string_view k : b.kernels) os << ' ' << k;
     os << "\nalgorithms:";
-    for (const exidel::delaunay::AlgorithmInfo& a : exidel::delaunay::algorithms()) os << ' ' << a.name;
+    for (const exidel::delaunay::AlgorithmInfo& a : exidel::delaunay::algorithms())
+        os << ' ' << a.name;
     os << '\n';
 }
 

@@ -9,7 +9,9 @@
 namespace exidel::cli {
 
 CommandLine::CommandLine(std::string command, std::string help, bool help_on_error)
-    : app("exidel " + command), command_(std::move(command)), help_(std::move(help)),
+    : app("exidel " + command),
+      command_(std::move(command)),
+      help_(std::move(help)),
       help_on_error_(help_on_error) {
     // Flags take no value (--stats=1 is an error), options keep their last value.
     app.option_defaults()
@@ -50,8 +52,9 @@ int CommandLine::usage_error(const std::string& message) const {
     if (help_on_error_) {
         // The synopsis (the help's first paragraph), not the whole help: the reason stays
         // the first thing one reads, not 70 lines above the prompt.
-        std::cerr << '\n' << help_.substr(0, help_.find("\n\n") + 1)
-                  << "(see exidel " << command_ << " --help)\n";
+        std::cerr << '\n'
+                  << help_.substr(0, help_.find("\n\n") + 1) << "(see exidel " << command_
+                  << " --help)\n";
     } else {
         std::cerr << "(see exidel " << command_ << " --help)\n";
     }

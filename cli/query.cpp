@@ -60,9 +60,8 @@ ParsedLine parse_query_line(std::string_view line) {
     }
     const std::size_t expected = 2 * point_count(*predicate);
     if (tokens.size() - 1 != expected) {
-        return fail(std::string(predicate_name(*predicate)) + " takes " +
-                    std::to_string(expected) + " coordinates, got " +
-                    std::to_string(tokens.size() - 1));
+        return fail(std::string(predicate_name(*predicate)) + " takes " + std::to_string(expected) +
+                    " coordinates, got " + std::to_string(tokens.size() - 1));
     }
     out.query.predicate = *predicate;
     for (std::size_t i = 0; i < expected; ++i) {

@@ -27,7 +27,7 @@ namespace exidel::cli {
 
 struct Query {
     Predicate predicate = Predicate::orient2d;
-    std::array<Point2, 4> points{};  // only the first point_count(predicate) are used
+    std::array<Point2, 4> points{};       // only the first point_count(predicate) are used
     std::optional<SpacePredicate> space;  // set for orient3d and insphere, which use:
     std::array<Point3, 5> points3{};      // the first 4 (orient3d) or all 5 (insphere)
 };

@@ -102,7 +102,8 @@ Algorithms:
 )";
 
 std::string study_help() {
-    return std::string(study_help_head) + delaunay::algorithm_help() + "\nKernels:\n" + kernel_help();
+    return std::string(study_help_head) + delaunay::algorithm_help() + "\nKernels:\n" +
+           kernel_help();
 }
 
 std::vector<std::string> split(std::string_view s, char sep) {
@@ -128,7 +129,8 @@ std::uint64_t parse_unsigned(std::string_view text, std::string_view what, std::
     return v;
 }
 
-std::vector<std::size_t> parse_list(std::string_view text, std::string_view what, std::uint64_t max) {
+std::vector<std::size_t> parse_list(std::string_view text, std::string_view what,
+                                    std::uint64_t max) {
     std::vector<std::size_t> out;
     for (const std::string& s : split(text, ',')) out.push_back(parse_unsigned(s, what, max));
     if (out.empty()) throw std::invalid_argument(std::string(what) + " needs at least one value");
@@ -141,8 +143,9 @@ std::vector<std::vector<double>> parse_points(std::string_view text, std::size_t
     for (const std::string& p : split(text, ';')) {
         const std::vector<std::string> coordinates = split(p, ',');
         if (coordinates.size() != dimension) {
-            throw std::invalid_argument(dimension == 2 ? "--points: expected x,y pairs separated by ';'"
-                                                       : "--points: expected x,y,z triples separated by ';'");
+            throw std::invalid_argument(dimension == 2
+                                            ? "--points: expected x,y pairs separated by ';'"
+                                            : "--points: expected x,y,z triples separated by ';'");
         }
         std::vector<double>& point = out.emplace_back();
         for (const std::string& c : coordinates) {
@@ -158,8 +161,9 @@ std::vector<std::vector<double>> parse_points(std::string_view text, std::size_t
 std::array<int, 2> parse_axes(std::string_view text) {
     const auto axis = [](char c) { return c == 'x' ? 0 : c == 'y' ? 1 : c == 'z' ? 2 : -1; };
     if (text.size() != 2 || axis(text[0]) < 0 || axis(text[1]) < 0 || text[0] == text[1]) {
-        throw std::invalid_argument("--axes must be two different letters of x, y, z (e.g. xz), got '" +
-                                    std::string(text) + "'");
+        throw std::invalid_argument(
+            "--axes must be two different letters of x, y, z (e.g. xz), got '" + std::string(text) +
+            "'");
     }
     return {axis(text[0]), axis(text[1])};
 }
@@ -175,8 +179,8 @@ struct Parsed {
     std::string study;
     research::RunOptions run;
     bool out_given = false;
-    std::optional<std::string> presets, kernels, predicate, points, move, axes, order, families, bits,
-        sizes, input, incircle, algorithms;
+    std::optional<std::string> presets, kernels, predicate, points, move, axes, order, families,
+        bits, sizes, input, incircle, algorithms;
     std::optional<std::uint64_t> width, height, step, samples, seeds, size, shrink;
     bool centered = false, list_presets = false;
 };
@@ -219,14 +223,13 @@ void add_options(CLI::App& app, Parsed& p) {
         app.add_option(names, *target);
     }
     // Whole-number options and their largest values.
-    for (auto [name, target, max] :
-         {std::tuple{"--width", &p.width, std::uint64_t{4096}},
-          {"--height", &p.height, std::uint64_t{4096}},
-          {"--step", &p.step, std::uint64_t{1} << 40},
-          {"--samples", &p.samples, std::uint64_t{100'000'000}},
-          {"--seeds", &p.seeds, std::uint64_t{1'000'000}},
-          {"--size", &p.size, std::uint64_t{1'000'000}},
-          {"--shrink", &p.shrink, std::uint64_t{1000}}}) {
+    for (auto [name, target, max] : {std::tuple{"--width", &p.width, std::uint64_t{4096}},
+                                     {"--height", &p.height, std::uint64_t{4096}},
+                                     {"--step", &p.step, std::uint64_t{1} << 40},
+                                     {"--samples", &p.samples, std::uint64_t{100'000'000}},
+                                     {"--seeds", &p.seeds, std::uint64_t{1'000'000}},
+                                     {"--size", &p.size, std::uint64_t{1'000'000}},
+                                     {"--shrink", &p.shrink, std::uint64_t{1000}}}) {
         number(name, *target, max);
     }
     app.add_flag("--centered", p.centered);
@@ -236,22 +239,27 @@ void add_options(CLI::App& app, Parsed& p) {
 research::FailureMapOptions failure_map_options(const Parsed& p) {
     research::FailureMapOptions o;
     if (p.predicate || p.points) {
-        if (!p.predicate || !p.points) throw std::invalid_argument("a custom map needs --predicate and --points");
+        if (!p.predicate || !p.points)
+            throw std::invalid_argument("a custom map needs --predicate and --points");
         research::FailureMapSpec s;
         s.name = "custom";
         s.space = space_predicate_from_name(*p.predicate);
         if (s.space) {
-            for (const std::vector<double>& c : parse_points(*p.points, 3)) s.points3.push_back({c[0], c[1], c[2]});
+            for (const std::vector<double>& c : parse_points(*p.points, 3))
+                s.points3.push_back({c[0], c[1], c[2]});
             if (p.axes) s.axes = parse_axes(*p.axes);
         } else {
             if (p.axes) throw std::invalid_argument("--axes is for orient3d and insphere maps");
             try {
                 s.formulation = research::formulation_from_name(*p.predicate);
             } catch (const std::invalid_argument&) {  // its message names the plane's three only
-                throw std::invalid_argument("--predicate must be orient2d|incircle|incircle_cosine|orient3d|insphere, got '" +
-                                            *p.predicate + "'");
+                throw std::invalid_argument(
+                    "--predicate must be orient2d|incircle|incircle_cosine|orient3d|insphere, got "
+                    "'" +
+                    *p.predicate + "'");
             }
-            for (const std::vector<double>& c : parse_points(*p.points, 2)) s.points.push_back({c[0], c[1]});
+            for (const std::vector<double>& c : parse_points(*p.points, 2))
+                s.points.push_back({c[0], c[1]});
         }
         const std::size_t last = s.arity() - 1;
         s.pivot = p.move ? parse_unsigned(*p.move, "--move", last) : 0;
@@ -260,12 +268,15 @@ research::FailureMapOptions failure_map_options(const Parsed& p) {
         if (p.order) s.order = parse_list(*p.order, "--order", last);
         if (p.step) s.step = std::int64_t(*p.step);
         s.centered = p.centered;
-        s.description = "custom " + std::string(s.predicate()) + " map, point " + std::to_string(s.pivot) +
-                        " moved" + (s.space ? std::string(" in ") + "xyz"[s.axes[0]] + " and " + "xyz"[s.axes[1]] : "");
+        s.description =
+            "custom " + std::string(s.predicate()) + " map, point " + std::to_string(s.pivot) +
+            " moved" +
+            (s.space ? std::string(" in ") + "xyz"[s.axes[0]] + " and " + "xyz"[s.axes[1]] : "");
         research::validate(s);  // before any work: bad specs are usage errors
         o.specs.push_back(std::move(s));
     } else if (p.presets && *p.presets != "all") {
-        for (const std::string& name : split(*p.presets, ',')) o.specs.push_back(research::failure_map_preset(name));
+        for (const std::string& name : split(*p.presets, ','))
+            o.specs.push_back(research::failure_map_preset(name));
     } else if (p.presets) {
         o.specs = research::failure_map_presets();
     }
@@ -350,7 +361,8 @@ int study_command(std::span<const std::string_view> args) {
     try {
         if (p.study == "failure-map") {
             if (p.list_presets) {
-                for (const FailureMapSpec& s : failure_map_presets()) std::cout << s.name << "  " << s.description << '\n';
+                for (const FailureMapSpec& s : failure_map_presets())
+                    std::cout << s.name << "  " << s.description << '\n';
                 return exit_ok;
             }
             const FailureMapOptions o = failure_map_options(p);
@@ -358,7 +370,8 @@ int study_command(std::span<const std::string_view> args) {
         } else if (p.study == "precision") {
             PrecisionOptions o;
             if (p.bits) {
-                for (std::size_t b : parse_list(*p.bits, "--bits", MpfrKernel::max_bits)) o.bits.push_back(unsigned(b));
+                for (std::size_t b : parse_list(*p.bits, "--bits", MpfrKernel::max_bits))
+                    o.bits.push_back(unsigned(b));
             }
             if (p.families) o.families = parse_families(*p.families);
             if (p.samples) o.samples = *p.samples;
@@ -390,24 +403,33 @@ int study_command(std::span<const std::string_view> args) {
         } else if (p.study == "all") {
             // `all` runs every study with its defaults: an option of one study would be
             // silently ignored, and its report's rerun line would not show it.
-            if (p.presets || p.kernels || p.predicate || p.points || p.move || p.axes || p.order || p.families ||
-                p.bits || p.sizes || p.input || p.incircle || p.algorithms || p.width || p.height ||
-                p.step || p.samples || p.seeds || p.size || p.shrink || p.centered || p.list_presets) {
-                return cli.usage_error("study all takes only --out, --seed, --jobs, --quick and "
-                                       "--no-progress; give a study's own options to that study");
+            if (p.presets || p.kernels || p.predicate || p.points || p.move || p.axes || p.order ||
+                p.families || p.bits || p.sizes || p.input || p.incircle || p.algorithms ||
+                p.width || p.height || p.step || p.samples || p.seeds || p.size || p.shrink ||
+                p.centered || p.list_presets) {
+                return cli.usage_error(
+                    "study all takes only --out, --seed, --jobs, --quick and "
+                    "--no-progress; give a study's own options to that study");
             }
             run_all_studies(p.run);
-            std::printf("\nall studies done in %.1f s; report: %s\n", seconds(), (p.run.out / "report.md").c_str());
+            std::printf("\nall studies done in %.1f s; report: %s\n", seconds(),
+                        (p.run.out / "report.md").c_str());
         } else if (p.study == "replay") {
-            if (!p.input || !p.kernels) return cli.usage_error("replay needs -i FILE and --kernel K");
+            if (!p.input || !p.kernels)
+                return cli.usage_error("replay needs -i FILE and --kernel K");
             const Kernel k = research::parse_kernel(*p.kernels);
             const auto policy = parse_policy(p.incircle.value_or("determinant"));
-            const std::vector<delaunay::Strategy> orders = parse_orders(p.order.value_or("lexicographic"));
-            if (orders.size() != 1) return cli.usage_error("replay runs one --order: lexicographic, radial or strips");
-            const std::vector<delaunay::Algorithm> algorithms = parse_algorithms(p.algorithms.value_or("external"));
+            const std::vector<delaunay::Strategy> orders =
+                parse_orders(p.order.value_or("lexicographic"));
+            if (orders.size() != 1)
+                return cli.usage_error("replay runs one --order: lexicographic, radial or strips");
+            const std::vector<delaunay::Algorithm> algorithms =
+                parse_algorithms(p.algorithms.value_or("external"));
             if (algorithms.size() != 1) return cli.usage_error("replay runs one --algorithm");
-            const Classification c = replay_fixture(*p.input, k, policy, Method(algorithms.front(), orders.front()));
-            std::cout << to_string(c.outcome) << (c.detail.empty() ? "" : " (" + c.detail + ")") << '\n';
+            const Classification c =
+                replay_fixture(*p.input, k, policy, Method(algorithms.front(), orders.front()));
+            std::cout << to_string(c.outcome) << (c.detail.empty() ? "" : " (" + c.detail + ")")
+                      << '\n';
         } else {
             return cli.usage_error("unknown study '" + p.study + "'");
         }

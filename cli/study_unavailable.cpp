@@ -1,5 +1,5 @@
-// exidel CLI: `exidel study` and `exidel fuzz` when exidel::research was not built (it needs RapidCheck
-// and libpng; see lib/research/CMakeLists.txt). Says so instead of being absent.
+// exidel CLI: `exidel study` and `exidel fuzz` when exidel::research was not built (it needs
+// RapidCheck and libpng; see lib/research/CMakeLists.txt). Says so instead of being absent.
 #include <iostream>
 
 #include "commands.hpp"

@@ -17,7 +17,8 @@ using research::Team;
 class Membership {
 public:
     Membership() = default;
-    explicit Membership(std::unique_ptr<Team> owned) : owned_(std::move(owned)), team_(owned_.get()) {}
+    explicit Membership(std::unique_ptr<Team> owned)
+        : owned_(std::move(owned)), team_(owned_.get()) {}
     Team& team() { return *team_; }
 
 private:

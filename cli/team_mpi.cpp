@@ -39,7 +39,8 @@ public:
     std::vector<std::string> gather(const std::string& mine) override {
         int length = int(mine.size());
         std::vector<int> lengths(rank_ == 0 ? std::size_t(size_) : 0);
-        check(MPI_Gather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, 0, MPI_COMM_WORLD), "MPI_Gather");
+        check(MPI_Gather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, 0, MPI_COMM_WORLD),
+              "MPI_Gather");
         std::vector<int> offsets(lengths.size());
         std::string all;
         if (rank_ == 0) {
@@ -48,11 +49,12 @@ public:
                 offsets[r] = int(total);
                 total += lengths[r];
             }
-            if (total > 2'000'000'000) throw std::runtime_error("MPI: the ranks' results exceed 2 GB");
+            if (total > 2'000'000'000)
+                throw std::runtime_error("MPI: the ranks' results exceed 2 GB");
             all.resize(std::size_t(total));
         }
-        check(MPI_Gatherv(mine.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(), MPI_CHAR, 0,
-                          MPI_COMM_WORLD),
+        check(MPI_Gatherv(mine.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(),
+                          MPI_CHAR, 0, MPI_COMM_WORLD),
               "MPI_Gatherv");
         std::vector<std::string> parts;
         for (std::size_t r = 0; r < lengths.size(); ++r) {
@@ -63,7 +65,8 @@ public:
 
     double max(double value) override {
         double result = 0;
-        check(MPI_Allreduce(&value, &result, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce");
+        check(MPI_Allreduce(&value, &result, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD),
+              "MPI_Allreduce");
         return result;
     }
 
@@ -72,7 +75,6 @@ public:
 private:
     int rank_ = 0, size_ = 1;
 };
-
 
 }  // namespace
 

@@ -8,9 +8,10 @@ namespace exidel::cli {
 
 Membership join_team() {
     if (const int ranks = launcher_ranks(); ranks > 1) {
-        throw std::runtime_error("started as one of " + std::to_string(ranks) +
-                                 " MPI ranks, but this exidel was built without MPI (Debian: apt-get install "
-                                 "libopenmpi-dev openmpi-bin, then configure and build again)");
+        throw std::runtime_error(
+            "started as one of " + std::to_string(ranks) +
+            " MPI ranks, but this exidel was built without MPI (Debian: apt-get install "
+            "libopenmpi-dev openmpi-bin, then configure and build again)");
     }
     return {};
 }

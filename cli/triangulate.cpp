@@ -183,8 +183,7 @@ void print_stats(std::ostream& err, std::size_t points, const delaunay::Result& 
     counters["flips"] = r.counters.flips();
     nlohmann::ordered_json failure;  // null when the run succeeded
     if (r.failure) {
-        failure = {{"kind", delaunay::to_string(r.failure->kind)},
-                   {"message", r.failure->message}};
+        failure = {{"kind", delaunay::to_string(r.failure->kind)}, {"message", r.failure->message}};
     }
     // Only the strips strategy runs on several threads, one strip or merge per thread.
     const std::size_t threads =
@@ -201,8 +200,9 @@ void print_stats(std::ostream& err, std::size_t points, const delaunay::Result& 
         {"incircle", policy_name(o.incircle)},
         {"algorithm", delaunay::to_string(r.algorithm)},
         // null for an algorithm that takes no order (it runs as it runs).
-        {"strategy", takes_order(r.algorithm) ? nlohmann::ordered_json(delaunay::to_string(r.strategy))
-                                              : nlohmann::ordered_json()},
+        {"strategy", takes_order(r.algorithm)
+                         ? nlohmann::ordered_json(delaunay::to_string(r.strategy))
+                         : nlohmann::ordered_json()},
         {"strips", r.strips},
         {"threads", threads},
         {"instrumentation", "counters"},
@@ -219,7 +219,8 @@ void print_stats(std::ostream& err, std::size_t points, const delaunay::Result& 
 
 // Are `a` and `b` the same existing file?
 bool same_file(const std::string& a, const std::string& b) {
-    struct stat sa {}, sb {};
+    struct stat sa {};
+    struct stat sb {};
     return ::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0 && sa.st_dev == sb.st_dev &&
            sa.st_ino == sb.st_ino;
 }
@@ -254,7 +255,8 @@ int run(const Options& o, const CommandLine& cli) {
         if (!to_stdout) output.emplace(*o.output);
         if (!to_stdout && *format == io::TriangulationFormat::ele) {
             const std::string& out = *o.output;
-            const std::string node = (out.ends_with(".ele") ? out.substr(0, out.size() - 4) : out) + ".node";
+            const std::string node =
+                (out.ends_with(".ele") ? out.substr(0, out.size() - 4) : out) + ".node";
             if (from_stdin || !same_file(node, *o.input.path)) node_output.emplace(node);
         }
     } catch (const std::runtime_error& e) {
@@ -363,15 +365,15 @@ int triangulate_command(std::span<const std::string_view> args) {
                    if (v == "cosine") return InCirclePolicy::cosine;
                    return {};
                });
-    add_parsed(app, "--order", "auto, lexicographic, radial or strips", o.strategy,
-               [](const std::string& v) -> std::optional<Strategy> {
-                   if (v == "auto") return Strategy::automatic;
-                   for (const Strategy s :
-                        {Strategy::lexicographic, Strategy::radial, Strategy::strips}) {
-                       if (v == delaunay::to_string(s)) return s;
-                   }
-                   return {};
-               });
+    add_parsed(
+        app, "--order", "auto, lexicographic, radial or strips", o.strategy,
+        [](const std::string& v) -> std::optional<Strategy> {
+            if (v == "auto") return Strategy::automatic;
+            for (const Strategy s : {Strategy::lexicographic, Strategy::radial, Strategy::strips}) {
+                if (v == delaunay::to_string(s)) return s;
+            }
+            return {};
+        });
     add_parsed(app, "--threads", "a whole number from 1 to 1024", o.threads,
                [](const std::string& v) { return whole_number(v, 1024); });
     add_parsed(app, "--strip-points",

@@ -150,7 +150,8 @@ delaunay::Box parse_box(const std::vector<std::string>& words) {
     std::string given;
     for (const std::string& w : words) given += (given.empty() ? "" : " ") + w;
     const auto fail = [&](const std::string& why) {
-        return std::invalid_argument("--clip XMIN YMIN XMAX YMAX: " + why + " (got '" + given + "')");
+        return std::invalid_argument("--clip XMIN YMIN XMAX YMAX: " + why + " (got '" + given +
+                                     "')");
     };
     if (words.size() != 4) throw fail("four numbers are needed");
     double v[4];
@@ -191,8 +192,8 @@ void print_stats(std::ostream& err, std::size_t points, const Triangulated& t,
         {"triangles", tri.triangle_count()},
         {"collinear", tri.collinear},
         {"vertices", d.vertex_count()},
-        {"clipped_vertices", clipped ? nlohmann::ordered_json(clipped->vertex_count())
-                                     : nlohmann::ordered_json()},
+        {"clipped_vertices",
+         clipped ? nlohmann::ordered_json(clipped->vertex_count()) : nlohmann::ordered_json()},
         {"kernel", t.kernel_name},
         {"algorithm", delaunay::to_string(t.result.algorithm)},
         {"stage_counts",
@@ -274,8 +275,7 @@ int run(const Options& o, const CommandLine& cli) {
     progress.phase("computing the Voronoi diagram");
     const Clock::time_point voronoi_start = Clock::now();
     try {
-        std::visit([&](const auto& k) { diagram = delaunay::voronoi(points, tri, k); },
-                   *kernel);
+        std::visit([&](const auto& k) { diagram = delaunay::voronoi(points, tri, k); }, *kernel);
     } catch (const delaunay::VoronoiError& e) {
         progress.stop();
         failure = Failure{"voronoi", std::string(to_string(e.status())), e.what()};

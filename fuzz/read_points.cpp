@@ -26,7 +26,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     } catch (const exidel::io::ReadError& e) {
         // Expected for malformed input; the message must say where.
         const std::string what = e.what();
-        if (what.find("line ") == std::string::npos && what.find("byte offset ") == std::string::npos) {
+        if (what.find("line ") == std::string::npos &&
+            what.find("byte offset ") == std::string::npos) {
             std::fprintf(stderr, "a ReadError that names no line or offset: %s\n", e.what());
             std::abort();
         }

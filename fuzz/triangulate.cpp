@@ -109,10 +109,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         (void)delaunay::triangulate(points, Double{}, o);
     };
     for (const delaunay::AlgorithmInfo& a : delaunay::algorithms()) {
-        for (const delaunay::Strategy s : {delaunay::Strategy::lexicographic, delaunay::Strategy::radial,
-                                           delaunay::Strategy::strips}) {
+        for (const delaunay::Strategy s :
+             {delaunay::Strategy::lexicographic, delaunay::Strategy::radial,
+              delaunay::Strategy::strips}) {
             if (!a.takes_order && s != delaunay::Strategy::lexicographic) continue;
-            for (const auto policy : {delaunay::InCirclePolicy::determinant, delaunay::InCirclePolicy::cosine}) {
+            for (const auto policy :
+                 {delaunay::InCirclePolicy::determinant, delaunay::InCirclePolicy::cosine}) {
                 delaunay::Options o;
                 o.algorithm = a.id;
                 o.strategy = a.takes_order ? s : delaunay::Strategy::automatic;

@@ -24,8 +24,8 @@ RunResult run(const std::string& args, const std::string& input = "") {
     return run_exidel("run", args, input);
 }
 
-const std::vector<std::string> all_kernels = {"double",  "long-double", "adaptive", "exact",
-                                              "exact-cpp", "mpfr:53",    "mpfr:300"};
+const std::vector<std::string> all_kernels = {"double",    "long-double", "adaptive", "exact",
+                                              "exact-cpp", "mpfr:53",     "mpfr:300"};
 
 TEST(ExidelBinary, TopLevelHelpAndUsage) {
     const RunResult help = run("--help");
@@ -40,14 +40,14 @@ TEST(ExidelBinary, TopLevelHelpAndUsage) {
     const RunResult version = run("--version");
     EXPECT_EQ(version.status, 0);
     const exidel::BuildInfo& b = exidel::build_info();
-    EXPECT_EQ(version.out.rfind("exidel " + std::string(b.version) + " (commit " +
-                                    std::string(b.commit) + ")\n",
-                                0),
-              0u)
+    EXPECT_EQ(
+        version.out.rfind(
+            "exidel " + std::string(b.version) + " (commit " + std::string(b.commit) + ")\n", 0),
+        0u)
         << version.out;
-    for (const char* part : {"compiler: ", "-ffp-contract=off", "GMP ", "MPFR ", "Boost ",
-                             "long double: ", "kernels: double long-double adaptive",
-                             "algorithms: external"}) {
+    for (const char* part :
+         {"compiler: ", "-ffp-contract=off", "GMP ", "MPFR ", "Boost ",
+          "long double: ", "kernels: double long-double adaptive", "algorithms: external"}) {
         EXPECT_NE(version.out.find(part), std::string::npos) << part << "\n" << version.out;
     }
 }
@@ -129,13 +129,14 @@ TEST(ExidelBinary, ErrorNamesTheLineAndStopsOutput) {
         {"orient2d 0 0 1 0 0x1q3 1", "not a number"},
     };
     for (const Case& c : cases) {
-        const std::string input = "# comment\n"
-                                  "orient2d 0 0 1 0 0 1\n"
-                                  "\n"
-                                  "incircle 0 0 1 0 0 1 2 2\n"
-                                  "   # another comment\n"
-                                  "orient2d 0 0 1 0 0 -1\n" +
-                                  c.bad_line + "\n" + "orient2d 0 0 1 0 0 1\n";
+        const std::string input =
+            "# comment\n"
+            "orient2d 0 0 1 0 0 1\n"
+            "\n"
+            "incircle 0 0 1 0 0 1 2 2\n"
+            "   # another comment\n"
+            "orient2d 0 0 1 0 0 -1\n" +
+            c.bad_line + "\n" + "orient2d 0 0 1 0 0 1\n";
         const std::string path = write_file("bad.txt", input);
         const RunResult r = run("predicate " + path);
         EXPECT_EQ(r.status, 1) << c.bad_line;

@@ -32,13 +32,13 @@ std::string without_last_line(const std::string& s) {
 }
 
 std::string fuzz(const std::string& options, const std::string& name) {
-    return "fuzz predicates --no-progress --checkpoint '" + work_path(name + ".ckpt") + "' --summary '" +
-           work_path(name + ".json") + "' " + options;
+    return "fuzz predicates --no-progress --checkpoint '" + work_path(name + ".ckpt") +
+           "' --summary '" + work_path(name + ".json") + "' " + options;
 }
 
 std::string fuzz_t(const std::string& options, const std::string& name) {
-    return "fuzz triangulations --no-progress --checkpoint '" + work_path(name + ".ckpt") + "' --summary '" +
-           work_path(name + ".json") + "' " + options;
+    return "fuzz triangulations --no-progress --checkpoint '" + work_path(name + ".ckpt") +
+           "' --summary '" + work_path(name + ".json") + "' " + options;
 }
 
 TEST(ExidelFuzz, AdaptiveAgreesWithExactAndEveryQueryIsCounted) {
@@ -54,25 +54,30 @@ TEST(ExidelFuzz, AdaptiveAgreesWithExactAndEveryQueryIsCounted) {
     for (const auto& [name, f] : j["families"].items()) {
         std::uint64_t per_predicate = 0;
         ASSERT_EQ(f["predicates"].size(), 4u) << name;
-        for (const auto& [p, n] : f["predicates"].items()) per_predicate += n["queries"].get<std::uint64_t>();
+        for (const auto& [p, n] : f["predicates"].items())
+            per_predicate += n["queries"].get<std::uint64_t>();
         EXPECT_EQ(per_predicate, f["queries"].get<std::uint64_t>()) << name;
-        EXPECT_GT(f["queries"].get<std::uint64_t>(), 1000u) << name;  // 102 blocks of 256, families in turn
+        EXPECT_GT(f["queries"].get<std::uint64_t>(), 1000u)
+            << name;  // 102 blocks of 256, families in turn
         sum += f["queries"].get<std::uint64_t>();
     }
     EXPECT_EQ(sum, 26000u);
     EXPECT_TRUE(j["reported"].empty());
     EXPECT_GT(j["seconds"].get<double>(), 0.0);
     EXPECT_EQ(j["run"]["threads_per_rank"], 2);
-    EXPECT_NE(r.out.find("# 26000 queries, 0 disagreements (adaptive against exact)"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("# 26000 queries, 0 disagreements (adaptive against exact)"),
+              std::string::npos)
+        << r.out;
     // The checkpoint of a finished campaign is removed.
     EXPECT_FALSE(std::filesystem::exists(work_path("ok.ckpt")));
 }
 
 TEST(ExidelFuzz, DisagreementsAreShrunkAndReplay) {
-    const auto r = run_exidel("fuzz_double",
-                              fuzz("-k double -n 3000 --families near --predicates orient2d,incircle --reports 4 -j 2",
-                                   "double"),
-                              "");
+    const auto r = run_exidel(
+        "fuzz_double",
+        fuzz("-k double -n 3000 --families near --predicates orient2d,incircle --reports 4 -j 2",
+             "double"),
+        "");
     ASSERT_EQ(r.status, 1) << r.err;  // disagreements found
     const Json j = read_json(work_path("double.json"));
     ASSERT_GT(j["disagreements"].get<std::uint64_t>(), 4u);
@@ -104,19 +109,26 @@ TEST(ExidelFuzz, DisagreementsAreShrunkAndReplay) {
 }
 
 TEST(ExidelFuzz, TheSameCampaignWhateverTheThreads) {
-    const auto one = run_exidel("fuzz_j1", fuzz("-k long-double -n 9000 --seed 3 -j 1 --reports 3", "j1"), "");
-    const auto two = run_exidel("fuzz_j2", fuzz("-k long-double -n 9000 --seed 3 -j 2 --reports 3", "j2"), "");
+    const auto one =
+        run_exidel("fuzz_j1", fuzz("-k long-double -n 9000 --seed 3 -j 1 --reports 3", "j1"), "");
+    const auto two =
+        run_exidel("fuzz_j2", fuzz("-k long-double -n 9000 --seed 3 -j 2 --reports 3", "j2"), "");
     ASSERT_EQ(one.status, two.status) << one.err << two.err;
     EXPECT_EQ(timeless(read_json(work_path("j1.json"))), timeless(read_json(work_path("j2.json"))));
     EXPECT_EQ(without_last_line(one.out), without_last_line(two.out));
     // Another seed draws other queries.
-    ASSERT_NE(run_exidel("fuzz_seed", fuzz("-k long-double -n 9000 --seed 4 --reports 3", "seed4"), "").status, 2);
-    EXPECT_NE(timeless(read_json(work_path("seed4.json"))), timeless(read_json(work_path("j1.json"))));
+    ASSERT_NE(
+        run_exidel("fuzz_seed", fuzz("-k long-double -n 9000 --seed 4 --reports 3", "seed4"), "")
+            .status,
+        2);
+    EXPECT_NE(timeless(read_json(work_path("seed4.json"))),
+              timeless(read_json(work_path("j1.json"))));
 }
 
 TEST(ExidelFuzz, AnInterruptedCampaignResumes) {
     namespace fs = std::filesystem;
-    const std::string options = "-k double -n 40000 --families kettner,lattice_circle --reports 5 -j 2";
+    const std::string options =
+        "-k double -n 40000 --families kettner,lattice_circle --reports 5 -j 2";
     const auto whole = run_exidel("fuzz_whole", fuzz(options + " --keep-checkpoint", "whole"), "");
     ASSERT_EQ(whole.status, 1) << whole.err;
     const fs::path dir = work_path("whole.ckpt");
@@ -132,24 +144,27 @@ TEST(ExidelFuzz, AnInterruptedCampaignResumes) {
     fs::resize_file(stripes[1], fs::file_size(stripes[1]) / 2);
 
     // Without --resume the checkpoint is not overwritten.
-    const auto refused = run_exidel("fuzz_refused",
-                                    "fuzz predicates --no-progress --checkpoint '" + dir.string() + "' " + options, "");
+    const auto refused = run_exidel(
+        "fuzz_refused",
+        "fuzz predicates --no-progress --checkpoint '" + dir.string() + "' " + options, "");
     EXPECT_EQ(refused.status, 2);
     EXPECT_NE(refused.err.find("--resume continues it"), std::string::npos) << refused.err;
     // Another campaign cannot resume it.
     const auto other = run_exidel("fuzz_other",
-                                  "fuzz predicates --no-progress --resume --checkpoint '" + dir.string() + "' " +
-                                      options + " --seed 5",
+                                  "fuzz predicates --no-progress --resume --checkpoint '" +
+                                      dir.string() + "' " + options + " --seed 5",
                                   "");
     EXPECT_EQ(other.status, 2);
-    EXPECT_NE(other.err.find("is of another campaign (it has 'seed 20250704', this run has 'seed 5')"),
-              std::string::npos)
+    EXPECT_NE(
+        other.err.find("is of another campaign (it has 'seed 20250704', this run has 'seed 5')"),
+        std::string::npos)
         << other.err;
 
-    const auto resumed = run_exidel("fuzz_resumed",
-                                    "fuzz predicates --no-progress --resume --checkpoint '" + dir.string() +
-                                        "' --summary '" + work_path("resumed.json") + "' " + options,
-                                    "");
+    const auto resumed =
+        run_exidel("fuzz_resumed",
+                   "fuzz predicates --no-progress --resume --checkpoint '" + dir.string() +
+                       "' --summary '" + work_path("resumed.json") + "' " + options,
+                   "");
     ASSERT_EQ(resumed.status, 1) << resumed.err;
     const Json a = read_json(work_path("whole.json")), b = read_json(work_path("resumed.json"));
     EXPECT_EQ(timeless(a), timeless(b));
@@ -165,16 +180,17 @@ TEST(ExidelFuzz, BadOptionsAreUsageErrors) {
         const char* args;
         const char* message;
     };
-    for (const Case& c : {Case{"fuzz predicates -n 0", "--queries takes a whole number from 1 to 2^62"},
-                          Case{"fuzz predicates -n 1.5e3x", "--queries takes a whole number"},
-                          Case{"fuzz predicates -n 2.5", "--queries takes a whole number"},
-                          Case{"fuzz predicates -k nope", "unknown kernel"},
-                          Case{"fuzz predicates --reference mpfr:1", "mpfr"},
-                          Case{"fuzz predicates --families nowhere", "unknown point family 'nowhere'"},
-                          Case{"fuzz predicates --predicates orient3d", "unknown predicate 'orient3d'"},
-                          Case{"fuzz predicates --no-checkpoint --resume", "--no-checkpoint with --resume"},
-                          Case{"fuzz predicates --resume --checkpoint nowhere-at-all", "no campaign to resume"},
-                          Case{"fuzz triangles", "unknown campaign 'triangles' (predicates or triangulations)"}}) {
+    for (const Case& c :
+         {Case{"fuzz predicates -n 0", "--queries takes a whole number from 1 to 2^62"},
+          Case{"fuzz predicates -n 1.5e3x", "--queries takes a whole number"},
+          Case{"fuzz predicates -n 2.5", "--queries takes a whole number"},
+          Case{"fuzz predicates -k nope", "unknown kernel"},
+          Case{"fuzz predicates --reference mpfr:1", "mpfr"},
+          Case{"fuzz predicates --families nowhere", "unknown point family 'nowhere'"},
+          Case{"fuzz predicates --predicates orient3d", "unknown predicate 'orient3d'"},
+          Case{"fuzz predicates --no-checkpoint --resume", "--no-checkpoint with --resume"},
+          Case{"fuzz predicates --resume --checkpoint nowhere-at-all", "no campaign to resume"},
+          Case{"fuzz triangles", "unknown campaign 'triangles' (predicates or triangulations)"}}) {
         const auto r = run_exidel("fuzz_bad", c.args, "");
         EXPECT_EQ(r.status, 2) << c.args;
         EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
@@ -205,8 +221,10 @@ TEST(ExidelFuzzTriangulations, EveryMethodCertifiesWithTheAdaptiveKernel) {
     EXPECT_EQ(j["outcomes"]["delaunay"], j["triangulations"]);
     EXPECT_EQ(j["wrong"], 0);
     EXPECT_EQ(j["problems"], 0);
-    for (const auto& [name, f] : j["families"].items()) EXPECT_EQ(f["triangulations"], 4 * methods * 2) << name;
-    for (const auto& [name, m] : j["methods"].items()) EXPECT_EQ(m["triangulations"], 52 * 2) << name;
+    for (const auto& [name, f] : j["families"].items())
+        EXPECT_EQ(f["triangulations"], 4 * methods * 2) << name;
+    for (const auto& [name, m] : j["methods"].items())
+        EXPECT_EQ(m["triangulations"], 52 * 2) << name;
     EXPECT_TRUE(j["reported"].empty());
     // The same campaign on two threads.
     const auto two = run_exidel("fuzzt_j2", fuzz_t("--sets 52 --sizes 3-40 -j 2", "t2"), "");
@@ -231,11 +249,13 @@ std::string replay_command(const std::string& path) {
 TEST(ExidelFuzzTriangulations, WrongOutcomesOfTheDoubleKernelBecomeFixturesThatReplay) {
     const std::string out = work_path("t-fixtures");
     std::filesystem::remove_all(out);
-    const auto r = run_exidel("fuzzt_double",
-                              fuzz_t("-k double --families near_lattice_circle,near_rounded_circle --sets 60 "
-                                     "--sizes 20-60 --reports 3 --out '" + out + "'",
-                                     "tdouble"),
-                              "");
+    const auto r =
+        run_exidel("fuzzt_double",
+                   fuzz_t("-k double --families near_lattice_circle,near_rounded_circle --sets 60 "
+                          "--sizes 20-60 --reports 3 --out '" +
+                              out + "'",
+                          "tdouble"),
+                   "");
     const Json j = read_json(work_path("tdouble.json"));
     ASSERT_GT(j["wrong"].get<std::uint64_t>(), 3u) << r.out;
     // An inexact kernel's wrong outcomes are expected; only a guard (a hang) is a problem.
@@ -263,15 +283,16 @@ TEST(ExidelFuzzTriangulations, BadOptionsAreUsageErrors) {
         const char* args;
         const char* message;
     };
-    for (const Case& c : {Case{"fuzz triangulations --sizes 10-5", "1 <= MIN <= MAX"},
-                          Case{"fuzz triangulations --sizes 0-5", "1 <= MIN <= MAX"},
-                          Case{"fuzz triangulations --sizes ten", "--sizes takes MIN-MAX"},
-                          Case{"fuzz triangulations --sizes 3-1000000", "up to 100000 points"},
-                          Case{"fuzz triangulations --incircle circle", "--incircle takes determinant, cosine"},
-                          Case{"fuzz triangulations --algorithms quickhull", "quickhull"},
-                          Case{"fuzz triangulations --orders spiral", "spiral"},
-                          Case{"fuzz triangulations -n 0", "--sets takes a whole number"},
-                          Case{"fuzz triangulations --kernel mpfr:0", "mpfr"}}) {
+    for (const Case& c :
+         {Case{"fuzz triangulations --sizes 10-5", "1 <= MIN <= MAX"},
+          Case{"fuzz triangulations --sizes 0-5", "1 <= MIN <= MAX"},
+          Case{"fuzz triangulations --sizes ten", "--sizes takes MIN-MAX"},
+          Case{"fuzz triangulations --sizes 3-1000000", "up to 100000 points"},
+          Case{"fuzz triangulations --incircle circle", "--incircle takes determinant, cosine"},
+          Case{"fuzz triangulations --algorithms quickhull", "quickhull"},
+          Case{"fuzz triangulations --orders spiral", "spiral"},
+          Case{"fuzz triangulations -n 0", "--sets takes a whole number"},
+          Case{"fuzz triangulations --kernel mpfr:0", "mpfr"}}) {
         const auto r = run_exidel("fuzzt_bad", c.args, "");
         EXPECT_EQ(r.status, 2) << c.args;
         EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;

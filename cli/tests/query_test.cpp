@@ -77,8 +77,8 @@ TEST(ParseDouble, RejectsOverflow) {
 }
 
 TEST(ParseDouble, RejectsGarbage) {
-    for (const char* t : {"", "abc", "1e", "1x", "--1", "+-1", "-+1", "0x-1", "0x", "0x+1",
-                          "1.2.3", "0x1p", ".", "1,5", "1 ", " 1", "0b101", "1e+", "x1"}) {
+    for (const char* t : {"", "abc", "1e", "1x", "--1", "+-1", "-+1", "0x-1", "0x", "0x+1", "1.2.3",
+                          "0x1p", ".", "1,5", "1 ", " 1", "0b101", "1e+", "x1"}) {
         rejected(t);
     }
     EXPECT_NE(rejected("1.5abc").find("trailing characters 'abc'"), std::string::npos);
@@ -128,11 +128,11 @@ TEST(ParseQueryLine, SpacePredicatesTakeThreeCoordinatesPerPoint) {
     ASSERT_EQ(i.kind, ParsedLine::Kind::query) << i.error;
     EXPECT_EQ(*i.query.space, SpacePredicate::insphere);
     EXPECT_EQ(i.query.points3[4], (Point3{13, 14, 15}));
-    EXPECT_NE(parse_query_line("insphere 1 2 3 4 5 6 7 8 9 10 11 12").error.find(
-                  "insphere takes 15 coordinates, got 12"),
+    EXPECT_NE(parse_query_line("insphere 1 2 3 4 5 6 7 8 9 10 11 12")
+                  .error.find("insphere takes 15 coordinates, got 12"),
               std::string::npos);
-    EXPECT_NE(parse_query_line("orient3d 0 0 0 1 0 0 0 1 0 0 0 nan").error.find(
-                  "coordinate 12: 'nan' is not a finite"),
+    EXPECT_NE(parse_query_line("orient3d 0 0 0 1 0 0 0 1 0 0 0 nan")
+                  .error.find("coordinate 12: 'nan' is not a finite"),
               std::string::npos);
     // The kernels' answers through the parsed query: d below the plane of a CCW abc.
     const ParsedLine below = parse_query_line("orient3d 0 0 0 1 0 0 0 1 0 0 0 -1");
@@ -160,8 +160,8 @@ TEST(ParseQueryLine, Errors) {
 }
 
 TEST(ParseKernel, NamesRoundTrip) {
-    for (const char* name : {"double", "long-double", "adaptive", "exact", "exact-cpp",
-                             "mpfr:53", "mpfr:2", "mpfr:1048576"}) {
+    for (const char* name : {"double", "long-double", "adaptive", "exact", "exact-cpp", "mpfr:53",
+                             "mpfr:2", "mpfr:1048576"}) {
         std::string error;
         const std::optional<AnyKernel> k = parse_kernel(name, error);
         ASSERT_TRUE(k.has_value()) << name << ": " << error;

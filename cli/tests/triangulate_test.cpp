@@ -53,9 +53,18 @@ std::vector<Point2> hundred_points() {
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> u(-10, 10);
     for (int i = 0; i < 86; ++i) p.push_back({u(rng), u(rng)});
-    for (const auto& [x, y] : std::vector<std::pair<int, int>>{
-             {3, 4}, {-4, 3}, {-3, -4}, {4, -3}, {5, 0}, {0, -5}, {0, 5}, {-5, 0}, {4, 3},
-             {-3, 4}, {3, -4}, {-4, -3}}) {
+    for (const auto& [x, y] : std::vector<std::pair<int, int>>{{3, 4},
+                                                               {-4, 3},
+                                                               {-3, -4},
+                                                               {4, -3},
+                                                               {5, 0},
+                                                               {0, -5},
+                                                               {0, 5},
+                                                               {-5, 0},
+                                                               {4, 3},
+                                                               {-3, 4},
+                                                               {3, -4},
+                                                               {-4, -3}}) {
         p.push_back({static_cast<double>(x), static_cast<double>(y)});
     }
     p.push_back(p[10]);
@@ -78,18 +87,33 @@ TEST(ExidelTriangulate, HelpAndListing) {
     EXPECT_EQ(help.status, 0);
     EXPECT_NE(help.out.find("usage: exidel triangulate"), std::string::npos);
     EXPECT_NE(help.out.find("--input-format"), std::string::npos);
-    const std::string top = std::string("'") + EXIDEL_CLI_PATH + "' --help > " +
-                            work_path("top.out");
+    const std::string top =
+        std::string("'") + EXIDEL_CLI_PATH + "' --help > " + work_path("top.out");
     ASSERT_EQ(std::system(top.c_str()), 0);
     EXPECT_NE(slurp(work_path("top.out")).find("triangulate"), std::string::npos);
 }
 
 TEST(ExidelTriangulate, BadOptionsExitTwoWithUsage) {
-    for (const char* args : {"--kernel", "--kernel fast", "--kernel=mpfr:1", "--incircle sine",
-                             "--format png", "--input-format csv", "--frob", "a b", "-i a b",
-                             "-o", "-o a.json -o b.json", "--order", "--order spiral",
-                             "--threads 0", "--threads two", "--threads=3x", "--strip-points 0",
-                             "--strip-points -5", "--strip-tiles 0", "--strip-tiles three"}) {
+    for (const char* args : {"--kernel",
+                             "--kernel fast",
+                             "--kernel=mpfr:1",
+                             "--incircle sine",
+                             "--format png",
+                             "--input-format csv",
+                             "--frob",
+                             "a b",
+                             "-i a b",
+                             "-o",
+                             "-o a.json -o b.json",
+                             "--order",
+                             "--order spiral",
+                             "--threads 0",
+                             "--threads two",
+                             "--threads=3x",
+                             "--strip-points 0",
+                             "--strip-points -5",
+                             "--strip-tiles 0",
+                             "--strip-tiles three"}) {
         const RunResult r = run(args, "0 0\n1 0\n0 1\n");
         EXPECT_EQ(r.status, 2) << args;
         EXPECT_NE(r.err.find("usage: exidel triangulate"), std::string::npos) << args;
@@ -106,8 +130,8 @@ TEST(ExidelTriangulate, EveryInputFormatGivesTheSameTriangulation) {
     }());
     ASSERT_EQ(reference.status, 0) << reference.err;
     EXPECT_TRUE(certify_output(pts, reference.out).ok());
-    for (io::PointFormat f :
-         {io::PointFormat::xy, io::PointFormat::json, io::PointFormat::node, io::PointFormat::f64}) {
+    for (io::PointFormat f : {io::PointFormat::xy, io::PointFormat::json, io::PointFormat::node,
+                              io::PointFormat::f64}) {
         const std::string name = std::string(io::to_string(f));
         const std::string ext = f == io::PointFormat::xy ? "txt" : name;
         const std::string path = points_file("pts." + ext, pts, f);
@@ -136,8 +160,8 @@ TEST(ExidelTriangulate, HundredPointsCertifyForEveryExactKernelAndPolicy) {
     const std::string path = points_file("hundred.json", pts, io::PointFormat::json);
     for (const char* kernel : {"adaptive", "exact", "exact-cpp"}) {
         for (const char* policy : {"determinant", "cosine"}) {
-            const RunResult r = run(std::string("-i ") + path + " --kernel " + kernel +
-                                    " --incircle " + policy);
+            const RunResult r =
+                run(std::string("-i ") + path + " --kernel " + kernel + " --incircle " + policy);
             ASSERT_EQ(r.status, 0) << kernel << " " << policy << ": " << r.err;
             const exidel::delaunay::Certificate c = certify_output(pts, r.out);
             EXPECT_TRUE(c.ok()) << kernel << " " << policy << "\n" << c.summary();
@@ -169,10 +193,8 @@ TEST(ExidelTriangulate, OutputFormatFromExtensionAndOption) {
     const std::string json = slurp(work_path("fmt-out.json"));
     const auto tri = io::parse_triangulation_json(json);
     EXPECT_EQ(ele.substr(0, ele.find('\n')), std::to_string(tri.triangle_count()) + " 3 0");
-    EXPECT_EQ(slurp(work_path("fmt-out.off")).rfind("OFF\n100 " +
-                                                        std::to_string(tri.triangle_count()) +
-                                                        " 0\n",
-                                                    0),
+    EXPECT_EQ(slurp(work_path("fmt-out.off"))
+                  .rfind("OFF\n100 " + std::to_string(tri.triangle_count()) + " 0\n", 0),
               0u);
     const std::string svg = slurp(work_path("fmt-out.svg"));
     EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
@@ -239,20 +261,21 @@ TEST(ExidelTriangulate, MalformedInputNamesTheLineAndWritesNothing) {
     EXPECT_NE(directory.err.find("Is a directory"), std::string::npos) << directory.err;
     const RunResult unwritable = run("-i " + in_any() + " -o /nonexistent-dir/out.json");
     EXPECT_EQ(unwritable.status, 1);
-    EXPECT_NE(unwritable.err.find("No such file or directory"), std::string::npos) << unwritable.err;
+    EXPECT_NE(unwritable.err.find("No such file or directory"), std::string::npos)
+        << unwritable.err;
 }
 
 TEST(ExidelTriangulate, EmptyInputIsZeroPoints) {
     const RunResult r = run("--stats", "# nothing here\n\n");
     ASSERT_EQ(r.status, 0) << r.err;
-    EXPECT_EQ(r.out, "{\"triangles\": [],\n \"halfedges\": [],\n \"hull\": [],\n \"duplicates\": []}\n");
+    EXPECT_EQ(r.out,
+              "{\"triangles\": [],\n \"halfedges\": [],\n \"hull\": [],\n \"duplicates\": []}\n");
     EXPECT_NE(r.err.find("\"points\": 0,"), std::string::npos);
 }
 
 // Kettner's configuration, p moved two ulps up: the double kernel contradicts itself
 // (lib/delaunay fixture KettnerTwoUlpsAboveReportsNoVisibleEdge).
-const std::string kettner =
-    "0x1p-1 0x1.0000000000002p-1\n12 12\n24 24\n2 2\n6 6\n";
+const std::string kettner = "0x1p-1 0x1.0000000000002p-1\n12 12\n24 24\n2 2\n6 6\n";
 
 TEST(ExidelTriangulate, InexactKernelFailureExitsOneWithoutOutput) {
     const std::string in = write_file("kettner.txt", kettner);
@@ -260,8 +283,8 @@ TEST(ExidelTriangulate, InexactKernelFailureExitsOneWithoutOutput) {
     std::remove(out.c_str());
     // The paper's order: the last point sees no hull edge. The default (radial) order
     // meets the same wrong sign as a point that sees no edge of the hull at all.
-    for (const auto& [order, kind] : {std::pair{"lexicographic", "no_visible_edge"},
-                                      std::pair{"auto", "point_inside_hull"}}) {
+    for (const auto& [order, kind] :
+         {std::pair{"lexicographic", "no_visible_edge"}, std::pair{"auto", "point_inside_hull"}}) {
         const RunResult r =
             run("-i " + in + " -o " + out + " --kernel double --order " + std::string(order));
         EXPECT_EQ(r.status, 1);
@@ -357,19 +380,43 @@ TEST(ExidelTriangulate, StatsIsOneJsonObjectWithEveryKey) {
     ASSERT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     const FlatJson stats(r.err);
     const auto& v = stats.values;
-    for (const char* key :
-         {"points", "vertices", "duplicates", "triangles", "hull_size", "collinear", "kernel",
-          "incircle", "instrumentation", "counters.seed_orientations",
-          "counters.tangent_orientations", "counters.incircle_tests", "counters.eroded_edges",
-          "counters.triangles_created", "counters.triangles_destroyed",
-          "counters.theorem1_checks", "counters.theorem1_violations",
-          "counters.visible_search_orientations", "counters.merge_orientations",
-          "counters.merge_incircle_tests", "counters.merge_deleted_edges",
-          "counters.merge_cross_edges", "counters.location_steps",
-          "counters.location_orientations", "counters.cavity_orientations",
-          "counters.lawson_flips", "counters.flips", "algorithm", "strategy", "strips",
-          "threads", "failure", "read_ms", "triangulate_ms", "certify_ms", "write_ms",
-          "total_ms"}) {
+    for (const char* key : {"points",
+                            "vertices",
+                            "duplicates",
+                            "triangles",
+                            "hull_size",
+                            "collinear",
+                            "kernel",
+                            "incircle",
+                            "instrumentation",
+                            "counters.seed_orientations",
+                            "counters.tangent_orientations",
+                            "counters.incircle_tests",
+                            "counters.eroded_edges",
+                            "counters.triangles_created",
+                            "counters.triangles_destroyed",
+                            "counters.theorem1_checks",
+                            "counters.theorem1_violations",
+                            "counters.visible_search_orientations",
+                            "counters.merge_orientations",
+                            "counters.merge_incircle_tests",
+                            "counters.merge_deleted_edges",
+                            "counters.merge_cross_edges",
+                            "counters.location_steps",
+                            "counters.location_orientations",
+                            "counters.cavity_orientations",
+                            "counters.lawson_flips",
+                            "counters.flips",
+                            "algorithm",
+                            "strategy",
+                            "strips",
+                            "threads",
+                            "failure",
+                            "read_ms",
+                            "triangulate_ms",
+                            "certify_ms",
+                            "write_ms",
+                            "total_ms"}) {
         EXPECT_TRUE(v.count(key)) << key << " missing in " << r.err;
     }
     EXPECT_EQ(v.size(), 37u) << r.err;
@@ -377,7 +424,7 @@ TEST(ExidelTriangulate, StatsIsOneJsonObjectWithEveryKey) {
     EXPECT_EQ(v.at("threads"), "1");  // radial runs on one thread whatever --threads says
     EXPECT_GE(std::stod(v.at("total_ms")), std::stod(v.at("triangulate_ms")));
     EXPECT_EQ(v.at("algorithm"), "external");  // the default
-    EXPECT_EQ(v.at("strategy"), "radial");  // auto, below 32768 points
+    EXPECT_EQ(v.at("strategy"), "radial");     // auto, below 32768 points
     const auto tri = io::parse_triangulation_json(r.out);
     EXPECT_EQ(v.at("points"), "100");
     EXPECT_EQ(v.at("vertices"), "98");
@@ -405,7 +452,8 @@ TEST(ExidelTriangulate, AlgorithmOptionTakesTheRegistryNames) {
     const std::string in = points_file("algorithms.txt", pts, io::PointFormat::xy);
     for (const exidel::delaunay::AlgorithmInfo& a : exidel::delaunay::algorithms()) {
         const std::string name(a.name);
-        for (const std::string& flag : {"--algorithm " + name, "--algorithm=" + name, "-a " + name}) {
+        for (const std::string& flag :
+             {"--algorithm " + name, "--algorithm=" + name, "-a " + name}) {
             const RunResult r = run("-i " + in + " --stats " + flag);
             ASSERT_EQ(r.status, 0) << flag << r.err;
             EXPECT_EQ(FlatJson(r.err).values.at("algorithm"), name) << flag;
@@ -429,18 +477,18 @@ TEST(ExidelTriangulate, OrdersAndThreadsGiveTheSameTriangles) {
     const std::vector<Point2> pts = hundred_points();
     const std::string in = points_file("orders.txt", pts, io::PointFormat::xy);
     std::string reference;
-    for (const char* args : {"--order lexicographic", "--order radial",
-                             "--order strips --strip-points 7 --threads 1",
-                             "--order strips --strip-points 7 --threads 2",
-                             "--order strips --strip-points 7 --strip-tiles 3 --threads 2",
-                             "--order auto"}) {
+    for (const char* args :
+         {"--order lexicographic", "--order radial", "--order strips --strip-points 7 --threads 1",
+          "--order strips --strip-points 7 --threads 2",
+          "--order strips --strip-points 7 --strip-tiles 3 --threads 2", "--order auto"}) {
         const RunResult r = run("-i " + in + " --stats " + args);
         ASSERT_EQ(r.status, 0) << args << r.err;
         const FlatJson stats(r.err);
         const auto& v = stats.values;
         const std::string all = args;
         const std::size_t end = all.find(' ', 8);
-        const std::string order = all.substr(8, end == std::string::npos ? std::string::npos : end - 8);
+        const std::string order =
+            all.substr(8, end == std::string::npos ? std::string::npos : end - 8);
         EXPECT_EQ(v.at("strategy"), order == "auto" ? "radial" : order) << args;
         if (order == "strips") {
             EXPECT_GT(std::stoul(v.at("strips")), 1u) << args;
@@ -459,7 +507,8 @@ TEST(ExidelTriangulate, OrdersAndThreadsGiveTheSameTriangles) {
         std::sort(tris.begin(), tris.end());
         std::string text;
         for (const auto& x : tris) {
-            text += std::to_string(x[0]) + "," + std::to_string(x[1]) + "," + std::to_string(x[2]) + ";";
+            text += std::to_string(x[0]) + "," + std::to_string(x[1]) + "," + std::to_string(x[2]) +
+                    ";";
         }
         if (reference.empty()) reference = text;
         EXPECT_EQ(text, reference) << args;
@@ -490,15 +539,16 @@ TEST(ExidelTriangulate, EleComesWithANodeFileOfTheSameBase) {
     // From xy input: 0-based.
     const std::string xy = points_file("based.xy", pts, io::PointFormat::xy);
     ASSERT_EQ(run("-i " + xy + " -o " + work_path("based-xy.ele")).status, 0);
-    EXPECT_EQ(io::parse_point_file(slurp(work_path("based-xy.node")), io::PointFormat::node)
-                  .index_base,
-              0u);
+    EXPECT_EQ(
+        io::parse_point_file(slurp(work_path("based-xy.node")), io::PointFormat::node).index_base,
+        0u);
 }
 
 TEST(ExidelTriangulate, ColumnsPickFieldsOfAWiderCsv) {
-    const std::string csv = write_file(
-        "wide.csv", "\xEF\xBB\xBF\"id\",\"city\",\"lon\",\"lat\"\n1,\"Paris, FR\",2.35,48.85\n"
-                    "2,London,-0.12,51.5\n3,Berlin,13.4,52.52\n4,Rome,12.5,41.9\n");
+    const std::string csv =
+        write_file("wide.csv",
+                   "\xEF\xBB\xBF\"id\",\"city\",\"lon\",\"lat\"\n1,\"Paris, FR\",2.35,48.85\n"
+                   "2,London,-0.12,51.5\n3,Berlin,13.4,52.52\n4,Rome,12.5,41.9\n");
     const RunResult by_name = run("-i " + csv + " --columns lon,lat --stats");
     ASSERT_EQ(by_name.status, 0) << by_name.err;
     EXPECT_NE(by_name.err.find("\"points\": 4,"), std::string::npos) << by_name.err;
@@ -520,7 +570,8 @@ TEST(ExidelTriangulate, StatsAndCompleteSentencesOnFailure) {
     EXPECT_EQ(r.status, 1);
     const std::string first = r.err.substr(0, r.err.find('\n'));
     EXPECT_NE(first.find("neither hull edge at the last point faces the new point"),
-              std::string::npos) << first;
+              std::string::npos)
+        << first;
     EXPECT_NE(first.find("The double kernel is not exact"), std::string::npos) << first;
     EXPECT_TRUE(first.ends_with(".")) << first;
     const FlatJson stats(r.err.substr(r.err.find('\n') + 1));
@@ -531,8 +582,9 @@ TEST(ExidelTriangulate, StatsAndCompleteSentencesOnFailure) {
 TEST(ExidelTriangulate, NoteWhenThereAreNoTriangles) {
     const RunResult line = run("", "0 0\n1 1\n2 2\n1 1\n");
     EXPECT_EQ(line.status, 0);
-    EXPECT_EQ(line.err, "exidel: note: no triangles: the distinct points are all on one line "
-                        "(3); the hull lists them in order\n");
+    EXPECT_EQ(line.err,
+              "exidel: note: no triangles: the distinct points are all on one line "
+              "(3); the hull lists them in order\n");
     const RunResult two = run("", "0 0\n1 1\n");
     EXPECT_NE(two.err.find("fewer than three distinct points (2)"), std::string::npos) << two.err;
     EXPECT_TRUE(run("--quiet", "0 0\n1 1\n").err.empty());
@@ -600,8 +652,10 @@ TEST(ExidelCertify, CertifiesJsonAndEleAndReportsFindings) {
     for (const char* file : {"cert.json", "cert.ele"}) {
         const RunResult r = run_exidel("cert", "certify " + in + " " + work_path(file), "");
         EXPECT_EQ(r.status, 0) << file << r.out << r.err;
-        EXPECT_EQ(r.out.rfind("certified: the Delaunay triangulation of 100 points (98 distinct), ", 0),
-                  0u) << r.out;
+        EXPECT_EQ(
+            r.out.rfind("certified: the Delaunay triangulation of 100 points (98 distinct), ", 0),
+            0u)
+            << r.out;
     }
     // The kite's wrong diagonal: one typed finding, exit status 1.
     const std::string kite = write_file("kite.xy", "0 0\n1 0\n0.6 0.6\n0 1\n");
@@ -611,7 +665,8 @@ TEST(ExidelCertify, CertifiesJsonAndEleAndReportsFindings) {
     EXPECT_EQ(bad.out.rfind("not_delaunay: ", 0), 0u) << bad.out;
     EXPECT_NE(bad.out.find("\nnot certified: 1 findings\n"), std::string::npos) << bad.out;
     // Unreadable files and usage errors.
-    const RunResult missing = run_exidel("cert", "certify " + kite + " " + work_path("none.json"), "");
+    const RunResult missing =
+        run_exidel("cert", "certify " + kite + " " + work_path("none.json"), "");
     EXPECT_EQ(missing.status, 1);
     EXPECT_NE(missing.err.find("No such file or directory"), std::string::npos) << missing.err;
     const RunResult malformed =
@@ -653,8 +708,9 @@ TEST(ExidelTriangulate, DevicesAndPipesAreWrittenInPlace) {
     ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
     const std::string in = in_any();
     // The reader gives up after 20 s, in case exidel never opens the pipe.
-    const std::string command = "timeout 20 cat '" + fifo + "' > '" + captured + "' & '" + EXIDEL_CLI_PATH +
-                                "' triangulate -i '" + in + "' -o '" + fifo + "'; s=$?; wait; exit $s";
+    const std::string command = "timeout 20 cat '" + fifo + "' > '" + captured + "' & '" +
+                                EXIDEL_CLI_PATH + "' triangulate -i '" + in + "' -o '" + fifo +
+                                "'; s=$?; wait; exit $s";
     EXPECT_EQ(std::system(command.c_str()), 0);
     struct stat st {};
     ASSERT_EQ(::stat(fifo.c_str(), &st), 0);
@@ -696,7 +752,8 @@ TEST(ExidelTriangulate, OutputIsWrittenThroughSymbolicLinks) {
     fs::create_symlink("loop-a.json", dir / "loop-b.json");
     const auto looped = run("-i " + in + " -o '" + (dir / "loop-a.json").string() + "'");
     EXPECT_EQ(looped.status, 1);
-    EXPECT_NE(looped.err.find("Too many levels of symbolic links"), std::string::npos) << looped.err;
+    EXPECT_NE(looped.err.find("Too many levels of symbolic links"), std::string::npos)
+        << looped.err;
 }
 
 }  // namespace

@@ -75,7 +75,8 @@ TEST(ExidelVoronoi, HelpAndListing) {
                              "\"vertex_sites\"", "Kernels:", "Algorithms:", "adaptive"}) {
         EXPECT_NE(help.out.find(text), std::string::npos) << text;
     }
-    const std::string top = std::string("'") + EXIDEL_CLI_PATH + "' --help > " + work_path("vtop.out");
+    const std::string top =
+        std::string("'") + EXIDEL_CLI_PATH + "' --help > " + work_path("vtop.out");
     ASSERT_EQ(std::system(top.c_str()), 0);
     EXPECT_NE(slurp(work_path("vtop.out")).find("  voronoi "), std::string::npos);
 }
@@ -122,8 +123,14 @@ TEST(ExidelVoronoi, CoordinatesReadBackBitForBit) {
         {{-3 * tiny, 0}, {2 * tiny, 0}, {0, 1}},
         {{0, 0}, {4e-310, 0}, {0, 4e-310}, {1e300, 1e300}},
         {{0, 0}, {1e-310, 3e-310}, {-2e-310, 1e-310}, {4e-310, -1e-310}, {tiny, 0}, {0, -6 * tiny}},
-        {{0, 0}, {3e307, 1e307}, {1e307, 4e307}, {-2e307, 2e307}, {-1e307, -3e307},
-         {2e307, -2e307}, {0.5e307, 0.7e307}, {8e307, 1e306}},
+        {{0, 0},
+         {3e307, 1e307},
+         {1e307, 4e307},
+         {-2e307, 2e307},
+         {-1e307, -3e307},
+         {2e307, -2e307},
+         {0.5e307, 0.7e307},
+         {8e307, 1e306}},
     };
     for (const std::vector<Point2>& points : inputs) {
         const std::string in = write_file("bits.xy", xy_text(points));
@@ -132,10 +139,11 @@ TEST(ExidelVoronoi, CoordinatesReadBackBitForBit) {
         const Library l = library(points);
         expect_voronoi_json(r.out, l.diagram);
         const delaunay::Box box{-1e308, -1e308, 1e308, 1.7976931348623157e308};
-        const RunResult c = run("-i " + in + " -q --clip -1e308 -1e308 1e308 1.7976931348623157e308");
+        const RunResult c =
+            run("-i " + in + " -q --clip -1e308 -1e308 1e308 1.7976931348623157e308");
         ASSERT_EQ(c.status, 0) << c.err;
         expect_voronoi_json(c.out,
-                         delaunay::clip(l.diagram, points, l.triangulation.triangulation, box));
+                            delaunay::clip(l.diagram, points, l.triangulation.triangulation, box));
     }
     const RunResult zero = run("-q", xy_text(inputs[0]));
     EXPECT_EQ(zero.out.rfind("{\"vertices\": [[-0.0, 0.5]],", 0), 0u) << zero.out;
@@ -178,9 +186,9 @@ TEST(ExidelVoronoi, BadClipIsAUsageError) {
         EXPECT_FALSE(exists(out)) << clip;
     }
     // Other bad options too.
-    for (const char* args : {"--kernel fast", "--format ele", "--threads 0", "-a nothing",
-                             "--input-format csv", "a b", "-o a.json -o b.json", "--frob",
-                             "--input-format json --columns 1,2"}) {
+    for (const char* args :
+         {"--kernel fast", "--format ele", "--threads 0", "-a nothing", "--input-format csv", "a b",
+          "-o a.json -o b.json", "--frob", "--input-format json --columns 1,2"}) {
         EXPECT_EQ(run(args, "0 0\n").status, 2) << args;
     }
     const RunResult png = run("-o " + work_path("vor.png"), "0 0\n");

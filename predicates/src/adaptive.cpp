@@ -57,8 +57,10 @@ struct ProductPair {
 
 template <bool Plus>
 Expansion product_pair_exact(const ProductPair& t) {
-    const Expansion first = (Expansion(t.p0) - Expansion(t.p1)) * (Expansion(t.q0) - Expansion(t.q1));
-    const Expansion second = (Expansion(t.r0) - Expansion(t.r1)) * (Expansion(t.s0) - Expansion(t.s1));
+    const Expansion first =
+        (Expansion(t.p0) - Expansion(t.p1)) * (Expansion(t.q0) - Expansion(t.q1));
+    const Expansion second =
+        (Expansion(t.r0) - Expansion(t.r1)) * (Expansion(t.s0) - Expansion(t.s1));
     return Plus ? first + second : first - second;
 }
 
@@ -113,7 +115,8 @@ Sign product_pair_adapt(const ProductPair& t, double sum_abs, AdaptiveStage& sta
     // Exact ties on lattices and lines: exact differences in a 62-bit window, in 128 bits.
     std::int64_t n[4];
     if (exact_small_differences<detail::wide_bits>({a.x, a.y, b.x, b.y}, {c.x, c.y, c.x, c.y},
-                                                   {a.x - c.x, a.y - c.y, b.x - c.x, b.y - c.y}, n)) {
+                                                   {a.x - c.x, a.y - c.y, b.x - c.x, b.y - c.y},
+                                                   n)) {
         return static_cast<Sign>(detail::orient2d_small_sign(n));
     }
     if (!expansion_safe({a.x, a.y, b.x, b.y, c.x, c.y}, 2, orient_max_log)) {
@@ -192,7 +195,6 @@ int incircle_of_rounded_differences(double adx, double ady, double bdx, double b
 using detail::dw::Word;
 using detail::in_double_word_range;
 
-
 template <bool Fma>
 [[gnu::always_inline]] inline bool incircle_double_word_eval(const Word (&w)[6], Sign& sign) {
     using detail::dw::add, detail::dw::mul, detail::dw::neg;
@@ -205,10 +207,9 @@ template <bool Fma>
     const Word ab = add(mul<Fma>(adx, bdy), neg(mul<Fma>(bdx, ady)));
     const Word det = add(add(mul<Fma>(alift, bc), mul<Fma>(blift, ca)), mul<Fma>(clift, ab));
     // An upper bound of T / kappa from the high parts (bounds.md: T <= kappa t).
-    const double t =
-        (alift.hi * (std::fabs(bdx.hi * cdy.hi) + std::fabs(cdx.hi * bdy.hi)) +
-         blift.hi * (std::fabs(cdx.hi * ady.hi) + std::fabs(adx.hi * cdy.hi))) +
-        clift.hi * (std::fabs(adx.hi * bdy.hi) + std::fabs(bdx.hi * ady.hi));
+    const double t = (alift.hi * (std::fabs(bdx.hi * cdy.hi) + std::fabs(cdx.hi * bdy.hi)) +
+                      blift.hi * (std::fabs(cdx.hi * ady.hi) + std::fabs(adx.hi * cdy.hi))) +
+                     clift.hi * (std::fabs(adx.hi * bdy.hi) + std::fabs(bdx.hi * ady.hi));
     return filter_decides(det.hi, eb::icc_dw * t, sign);
 }
 
@@ -468,8 +469,7 @@ template <bool Fma>
     return CppIntExactKernel::incircle_cosine(a, b, c, d);
 }
 
-inline Sign incircle_cosine_impl(Point2 a, Point2 b, Point2 c, Point2 d,
-                                 AdaptiveStage* stage) {
+inline Sign incircle_cosine_impl(Point2 a, Point2 b, Point2 c, Point2 d, AdaptiveStage* stage) {
     const double adx = a.x - d.x, ady = a.y - d.y, bdx = b.x - d.x, bdy = b.y - d.y;
     const double acx = a.x - c.x, acy = a.y - c.y, bcx = b.x - c.x, bcy = b.y - c.y;
     const double u1 = adx * bdx, u2 = ady * bdy, v1 = acx * bcx, v2 = acy * bcy;
@@ -491,8 +491,8 @@ inline Sign incircle_cosine_impl(Point2 a, Point2 b, Point2 c, Point2 d,
             const double left_lengths = ac2 * bc2, right_lengths = ad2 * bd2;
             const double left = left_lengths * uu, right = right_lengths * vv;
             // Nothing subnormal: not a factor, not a partial product, not a side.
-            const double smallest = std::min(
-                {ac2, bc2, ad2, bd2, uu, vv, left_lengths, right_lengths, left, right});
+            const double smallest =
+                std::min({ac2, bc2, ad2, bd2, uu, vv, left_lengths, right_lengths, left, right});
             constexpr double largest = std::numeric_limits<double>::max();
             // Written so that a NaN fails the test.
             if (smallest >= eb::cos_min_factor && left <= largest && right <= largest) {
@@ -533,13 +533,13 @@ int expansion_square(double h, double l, double* out /* [8] */) {
 /// value for the rounded differences (which is the answer when no difference rounded,
 /// the common case of exact ties on grids), then the exact value from the differences as
 /// two-component expansions. No allocation: at most 32 components, on the stack.
-[[gnu::noinline]] Sign compare_distance_adapt(Point2 c, Point2 p, Point2 q,
-                                              AdaptiveStage& stage) {
+[[gnu::noinline]] Sign compare_distance_adapt(Point2 c, Point2 p, Point2 q, AdaptiveStage& stage) {
     stage = AdaptiveStage::small_integer;
     if (same_point(p, q)) return Sign::zero;
     std::int64_t n[4];
     if (exact_small_differences<detail::wide_bits>({p.x, p.y, q.x, q.y}, {c.x, c.y, c.x, c.y},
-                                                   {p.x - c.x, p.y - c.y, q.x - c.x, q.y - c.y}, n)) {
+                                                   {p.x - c.x, p.y - c.y, q.x - c.x, q.y - c.y},
+                                                   n)) {
         return static_cast<Sign>(detail::distance_small_sign(n));
     }
     if (!expansion_safe({c.x, c.y, p.x, p.y, q.x, q.y}, 2, distance_max_log)) {

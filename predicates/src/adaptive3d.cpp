@@ -63,14 +63,13 @@ inline bool orient3d_filter(P3 a, P3 b, P3 c, P3 d, double (&v)[9], Sign& sign) 
     const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
     const double cdxady = cdx * ady, adxcdy = adx * cdy;
     const double adxbdy = adx * bdy, bdxady = bdx * ady;
-    const double det =
-        adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady);
+    const double det = adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady);
     const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * std::fabs(adz) +
                              (std::fabs(cdxady) + std::fabs(adxcdy)) * std::fabs(bdz) +
                              (std::fabs(adxbdy) + std::fabs(bdxady)) * std::fabs(cdz);
     const double spread = (std::fabs(adz) + std::fabs(bdz)) + (std::fabs(cdz) + 1.0);
-    return filter_decides(
-        det, filter_bound(eb::o3d_a * permanent, eb::underflow_orient3d, spread), sign);
+    return filter_decides(det, filter_bound(eb::o3d_a * permanent, eb::underflow_orient3d, spread),
+                          sign);
 }
 
 /// The double-word stage (proofs/bounds.md#orient3d-double-word): the exact differences,
@@ -97,8 +96,7 @@ template <bool Fma>
 }
 #endif
 
-[[gnu::noinline]] bool orient3d_double_word(P3 a, P3 b, P3 c, P3 d,
-                                            Sign& sign) {
+[[gnu::noinline]] bool orient3d_double_word(P3 a, P3 b, P3 c, P3 d, Sign& sign) {
     using detail::dw::two_sum;
     const Word w[9] = {two_sum(a.x, -d.x), two_sum(a.y, -d.y), two_sum(a.z, -d.z),
                        two_sum(b.x, -d.x), two_sum(b.y, -d.y), two_sum(b.z, -d.z),
@@ -116,8 +114,8 @@ template <bool Fma>
 
 /// Every difference exact and all in a window of 30 bits: the determinant in 64/128-bit
 /// integers (small_integers.hpp).
-[[gnu::noinline]] bool orient3d_small_integers(P3 a, P3 b, P3 c, P3 d,
-                                               const double (&v)[9], Sign& sign) {
+[[gnu::noinline]] bool orient3d_small_integers(P3 a, P3 b, P3 c, P3 d, const double (&v)[9],
+                                               Sign& sign) {
     std::int64_t n[9];
     if (!detail::exact_small_differences({a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z},
                                          {d.x, d.y, d.z, d.x, d.y, d.z, d.x, d.y, d.z}, v, n)) {
@@ -127,8 +125,8 @@ template <bool Fma>
     return true;
 }
 
-[[gnu::noinline]] Sign orient3d_adapt(P3 a, P3 b, P3 c, P3 d,
-                                      const double (&v)[9], AdaptiveStage& stage) {
+[[gnu::noinline]] Sign orient3d_adapt(P3 a, P3 b, P3 c, P3 d, const double (&v)[9],
+                                      AdaptiveStage& stage) {
     stage = AdaptiveStage::small_integer;
     if (same_point(a, b) || same_point(a, c) || same_point(a, d) || same_point(b, c) ||
         same_point(b, d) || same_point(c, d)) {
@@ -164,8 +162,7 @@ inline Sign orient3d_impl(P3 a, P3 b, P3 c, P3 d, AdaptiveStage* stage) {
 // ---- insphere ---------------------------------------------------------------------------
 
 /// The twelve rounded differences every stage of insphere starts from.
-inline void insphere_differences(P3 a, P3 b, P3 c, P3 d, P3 e,
-                                 double (&v)[12]) {
+inline void insphere_differences(P3 a, P3 b, P3 c, P3 d, P3 e, double (&v)[12]) {
     v[0] = a.x - e.x, v[1] = a.y - e.y, v[2] = a.z - e.z;
     v[3] = b.x - e.x, v[4] = b.y - e.y, v[5] = b.z - e.z;
     v[6] = c.x - e.x, v[7] = c.y - e.y, v[8] = c.z - e.z;
@@ -231,8 +228,8 @@ bool insphere_stage_a(const double (&v)[12], Sign& sign) {
     const double orientations =
         (std::fabs(abc) + std::fabs(bcd)) + (std::fabs(cda) + std::fabs(dab));
     const double spread = (lifts * zs + lifts) + (orientations + 1.0);
-    return filter_decides(
-        det, filter_bound(eb::isp_a * permanent, eb::underflow_insphere, spread), sign);
+    return filter_decides(det, filter_bound(eb::isp_a * permanent, eb::underflow_insphere, spread),
+                          sign);
 }
 
 /// The double-word stage (proofs/bounds.md#insphere-double-word), in the filter's order.
@@ -280,8 +277,7 @@ template <bool Fma>
 }
 #endif
 
-[[gnu::noinline]] bool insphere_double_word(P3 a, P3 b, P3 c, P3 d, P3 e,
-                                            Sign& sign) {
+[[gnu::noinline]] bool insphere_double_word(P3 a, P3 b, P3 c, P3 d, P3 e, Sign& sign) {
     using detail::dw::two_sum;
     const Word w[12] = {two_sum(a.x, -e.x), two_sum(a.y, -e.y), two_sum(a.z, -e.z),
                         two_sum(b.x, -e.x), two_sum(b.y, -e.y), two_sum(b.z, -e.z),
@@ -300,8 +296,8 @@ template <bool Fma>
 
 /// Every difference exact and all in a window of 24 bits: the determinant in 64/128-bit
 /// integers (small_integers.hpp).
-[[gnu::noinline]] bool insphere_small_integers(P3 a, P3 b, P3 c, P3 d,
-                                               P3 e, const double (&v)[12], Sign& sign) {
+[[gnu::noinline]] bool insphere_small_integers(P3 a, P3 b, P3 c, P3 d, P3 e, const double (&v)[12],
+                                               Sign& sign) {
     std::int64_t n[12];
     if (!detail::exact_small_differences<detail::insphere_bits>(
             {a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z},
@@ -312,8 +308,8 @@ template <bool Fma>
     return true;
 }
 
-[[gnu::noinline]] Sign insphere_adapt(P3 a, P3 b, P3 c, P3 d, P3 e,
-                                      const double (&v)[12], AdaptiveStage& stage) {
+[[gnu::noinline]] Sign insphere_adapt(P3 a, P3 b, P3 c, P3 d, P3 e, const double (&v)[12],
+                                      AdaptiveStage& stage) {
     // Two equal points make two equal rows of the lifted 5 x 5 determinant: zero.
     stage = AdaptiveStage::small_integer;
     const Point3 p[5] = {a, b, c, d, e};
@@ -332,9 +328,9 @@ template <bool Fma>
         stage = AdaptiveStage::small_integer;
         if (Sign s; insphere_small_integers(a, b, c, d, e, v, s)) return s;
     }
-    if (!detail::expansion_safe({a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z,
-                                 e.x, e.y, e.z},
-                                5, insphere_max_log)) {
+    if (!detail::expansion_safe(
+            {a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z, e.x, e.y, e.z}, 5,
+            insphere_max_log)) {
         stage = AdaptiveStage::gmp;
         return GmpExactKernel::insphere(a, b, c, d, e);
     }
@@ -344,8 +340,7 @@ template <bool Fma>
 
 /// Stage A, then the exact stages. Out of line, so the semi-static fast path keeps few
 /// values live.
-[[gnu::noinline]] Sign insphere_after_filter(P3 a, P3 b, P3 c, P3 d, P3 e,
-                                             AdaptiveStage& stage) {
+[[gnu::noinline]] Sign insphere_after_filter(P3 a, P3 b, P3 c, P3 d, P3 e, AdaptiveStage& stage) {
     double v[12];
     insphere_differences(a, b, c, d, e, v);
     if (Sign s; insphere_stage_a(v, s)) return s;

@@ -113,7 +113,8 @@ inline void write_signs(int positive, int negative, Sign* out, Slow slow) {
     for (std::size_t i = 0; i + 4 <= n; i += 4) {
         const Lanes pa = load4(a + i), pb = load4(b + i), pc = load4(c + i);
         const __m256d detleft = _mm256_mul_pd(_mm256_sub_pd(pa.x, pc.x), _mm256_sub_pd(pb.y, pc.y));
-        const __m256d detright = _mm256_mul_pd(_mm256_sub_pd(pa.y, pc.y), _mm256_sub_pd(pb.x, pc.x));
+        const __m256d detright =
+            _mm256_mul_pd(_mm256_sub_pd(pa.y, pc.y), _mm256_sub_pd(pb.x, pc.x));
         const __m256d det = _mm256_sub_pd(detleft, detright);
         const __m256d detsum = _mm256_add_pd(abs4(detleft), abs4(detright));
         const __m256d errbound = _mm256_add_pd(_mm256_mul_pd(ccw_a, detsum), underflow);
@@ -149,16 +150,16 @@ inline void write_signs(int positive, int negative, Sign* out, Slow slow) {
             _mm256_max_pd(_mm256_max_pd(abs4(adx), abs4(ady)), _mm256_max_pd(abs4(bdx), abs4(bdy))),
             _mm256_max_pd(abs4(cdx), abs4(cdy)));
         // ((alift * bc + blift * ca) + clift * ab), as the scalar expression associates.
-        const __m256d det = _mm256_add_pd(
-            _mm256_add_pd(_mm256_mul_pd(lift(adx, ady), cross(bdx, cdy, cdx, bdy)),
-                          _mm256_mul_pd(lift(bdx, bdy), cross(cdx, ady, adx, cdy))),
-            _mm256_mul_pd(lift(cdx, cdy), cross(adx, bdy, bdx, ady)));
+        const __m256d det =
+            _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(lift(adx, ady), cross(bdx, cdy, cdx, bdy)),
+                                        _mm256_mul_pd(lift(bdx, bdy), cross(cdx, ady, adx, cdy))),
+                          _mm256_mul_pd(lift(cdx, cdy), cross(adx, bdy, bdx, ady)));
         const __m256d m2 = _mm256_mul_pd(m, m);
         const __m256d bound = _mm256_mul_pd(coefficient, _mm256_mul_pd(m2, m2));
         const __m256d in_range =
             _mm256_and_pd(_mm256_cmp_pd(m, lo, _CMP_GE_OQ), _mm256_cmp_pd(m, hi, _CMP_LE_OQ));
-        const int positive = _mm256_movemask_pd(
-            _mm256_and_pd(in_range, _mm256_cmp_pd(det, bound, _CMP_GT_OQ)));
+        const int positive =
+            _mm256_movemask_pd(_mm256_and_pd(in_range, _mm256_cmp_pd(det, bound, _CMP_GT_OQ)));
         const int negative = _mm256_movemask_pd(_mm256_and_pd(
             in_range, _mm256_cmp_pd(_mm256_xor_pd(det, sign_bit), bound, _CMP_GT_OQ)));
         write_signs(positive, negative, out + i, [&](int k) {
@@ -185,7 +186,8 @@ void orient2d(std::span<const Point2> a, std::span<const Point2> b, std::span<co
             done = n - n % 4;
         }
 #endif
-        for (std::size_t i = done; i < n; ++i) out[i] = detail::orient2d_unchecked(a[i], b[i], c[i]);
+        for (std::size_t i = done; i < n; ++i)
+            out[i] = detail::orient2d_unchecked(a[i], b[i], c[i]);
     });
 }
 
@@ -223,7 +225,8 @@ void compare_distance(std::span<const Point2> c, std::span<const Point2> p,
     const std::size_t n = out.size();
     require_same_size(n, {c.size(), p.size(), q.size()}, "compare_distance");
     run_in_standard_environment([&] {
-        for (std::size_t i = 0; i < n; ++i) out[i] = detail::compare_distance_unchecked(c[i], p[i], q[i]);
+        for (std::size_t i = 0; i < n; ++i)
+            out[i] = detail::compare_distance_unchecked(c[i], p[i], q[i]);
     });
 }
 

@@ -116,8 +116,9 @@ std::optional<double> float_coordinate(double base, double n, double en,
     // Claim F2: |N / (2 D) - u| <= (en + |n / d| ed) / (2 (|d| - ed)) + 2 eps |u| (u has
     // two roundings), and |n / d| <= 2 |u| (1 + 3 eps); the computed e is at least the
     // bound: its own roundings are covered by the factor.
-    const double e = (0.5 * ((en + 2.0 * mag * den.error) * den.slack) + 2.0 * bounds::epsilon * mag) *
-                     bounds::circumcenter_float_factor;
+    const double e =
+        (0.5 * ((en + 2.0 * mag * den.error) * den.slack) + 2.0 * bounds::epsilon * mag) *
+        bounds::circumcenter_float_factor;
     if (!(e <= bounds::circumcenter_max_offset)) return std::nullopt;
     // Claim F3: base + u == s + r exactly (Two-Sum), so |x - s| <= |r| + e.
     const Word sr = two_sum(base, u);
@@ -153,11 +154,11 @@ std::optional<Point2> float_stage(const Differences& t) noexcept {
 
 /// The polynomials of the centre in double-word arithmetic.
 struct Frame {
-    Word d;            ///< D = bx cy - by cx
-    double d_error;    ///< bound on |D~ - D|
-    Word nx, ny;       ///< Nx, Ny
-    double tnx, tny;   ///< their permanents (from the high parts)
-    double td;         ///< D's permanent
+    Word d;           ///< D = bx cy - by cx
+    double d_error;   ///< bound on |D~ - D|
+    Word nx, ny;      ///< Nx, Ny
+    double tnx, tny;  ///< their permanents (from the high parts)
+    double td;        ///< D's permanent
 };
 
 /// base + N / (2 D), if stage 2 certifies the nearest double (bounds.md#circumcenter).
@@ -180,21 +181,23 @@ template <bool Fma>
     const double f_error = bounds::circumcenter_rel * (tn + 2.0 * f.td * std::fabs(w.hi));
     const double h = half_gap(s);
     const double lhs = (std::fabs(fw.hi) + f_error) * (1.0 + bounds::circumcenter_margin);
-    const double rhs = 2.0 * (std::fabs(f.d.hi) - f.d_error) * h *
-                       (1.0 - bounds::circumcenter_margin);
+    const double rhs =
+        2.0 * (std::fabs(f.d.hi) - f.d_error) * h * (1.0 - bounds::circumcenter_margin);
     if (!(lhs < rhs)) return std::nullopt;
     return s;
 }
 
 template <bool Fma>
-[[gnu::always_inline]] inline std::optional<Point2> double_word_stage(const Differences& t) noexcept {
+[[gnu::always_inline]] inline std::optional<Point2> double_word_stage(
+    const Differences& t) noexcept {
     const Word bx = t.bx, by = t.by, cx = t.cx, cy = t.cy;
     Frame f;
     f.d = add(mul<Fma>(bx, cy), neg(mul<Fma>(by, cx)));
     f.td = std::fabs(bx.hi * cy.hi) + std::fabs(by.hi * cx.hi);
     f.d_error = bounds::circumcenter_rel * f.td;
     if (!(std::fabs(f.d.hi) > 2.0 * f.d_error)) return std::nullopt;  // near-collinear
-    const Word bb = add(mul<Fma>(bx, bx), mul<Fma>(by, by)), cc = add(mul<Fma>(cx, cx), mul<Fma>(cy, cy));
+    const Word bb = add(mul<Fma>(bx, bx), mul<Fma>(by, by)),
+               cc = add(mul<Fma>(cx, cx), mul<Fma>(cy, cy));
     f.nx = add(mul<Fma>(cy, bb), neg(mul<Fma>(by, cc)));
     f.ny = add(mul<Fma>(bx, cc), neg(mul<Fma>(cx, bb)));
     f.tnx = std::fabs(cy.hi) * bb.hi + std::fabs(by.hi) * cc.hi;
@@ -206,7 +209,6 @@ template <bool Fma>
     if (!y) return std::nullopt;
     return Point2{*x, *y};
 }
-
 
 #if (defined(__x86_64__) || defined(__i386__)) && defined(__GNUC__) && !defined(__FMA__)
 [[gnu::target("fma")]] std::optional<Point2> double_word_stage_fma(const Differences& t) noexcept {
@@ -263,8 +265,9 @@ double round_quotient(mpz_srcptr num, mpz_srcptr den, long exp2) noexcept {
     // |value| is in [2^(L-1), 2^(L+1)) with L = bits(n) - bits(den) + exp2.
     const long L = static_cast<long>(mpz_sizeinbase(n.get(), 2)) -
                    static_cast<long>(mpz_sizeinbase(den, 2)) + exp2;
-    if (L > 1100) return mpz_sgn(num) < 0 ? -std::numeric_limits<double>::infinity()
-                                          : std::numeric_limits<double>::infinity();
+    if (L > 1100)
+        return mpz_sgn(num) < 0 ? -std::numeric_limits<double>::infinity()
+                                : std::numeric_limits<double>::infinity();
     long quantum = std::max(L - 53, -1074L);  // the value's last significand bit
     for (;;) {
         // q = floor(n * 2^(exp2 - quantum) / den), r the remainder's numerator over dd.
@@ -320,7 +323,8 @@ Circumcenter circumcenter_exact(Point2 a, Point2 b, Point2 c) noexcept {
     mpz_mul(d.get(), bx.get(), cy.get());
     mpz_mul(t.get(), by.get(), cx.get());
     mpz_sub(d.get(), d.get(), t.get());
-    if (mpz_sgn(d.get()) == 0) return {{nan, nan}, CircumcenterStatus::collinear, CircumcenterStage::exact};
+    if (mpz_sgn(d.get()) == 0)
+        return {{nan, nan}, CircumcenterStatus::collinear, CircumcenterStage::exact};
     mpz_mul(bb.get(), bx.get(), bx.get());
     mpz_addmul(bb.get(), by.get(), by.get());
     mpz_mul(cc.get(), cx.get(), cx.get());

@@ -57,7 +57,8 @@ inline double two_diff_tail(double a, double b, double x) {
 }
 
 /// x + y == a * b exactly, x = fl(a * b). The error term is one fused multiply-add,
-/// written explicitly (docs/background.md section 1: Dekker's split breaks when the compiler contracts).
+/// written explicitly (docs/background.md section 1: Dekker's split breaks when the compiler
+/// contracts).
 inline void two_product(double a, double b, double& x, double& y) {
     x = a * b;
     y = std::fma(a, b, -x);
@@ -255,9 +256,7 @@ public:
     /// The sign of the exact value (checked_sign: the structure is not taken on trust).
     Sign sign() const { return checked_sign(static_cast<int>(c_.size()), c_.data()); }
     friend Expansion operator+(const Expansion& e, const Expansion& f) { return sum(e, f, 1.0); }
-    friend Expansion operator-(const Expansion& e, const Expansion& f) {
-        return sum(e, f, -1.0);
-    }
+    friend Expansion operator-(const Expansion& e, const Expansion& f) { return sum(e, f, -1.0); }
     friend Expansion operator*(const Expansion& e, const Expansion& f) {
         const Expansion& small = e.c_.size() <= f.c_.size() ? e : f;
         const Expansion& large = e.c_.size() <= f.c_.size() ? f : e;

@@ -137,10 +137,10 @@ N insphere_of_differences(const InsphereDifferences<N>& v) {
 template <class N, class Lift>
 Sign insphere_formula(Point3 a, Point3 b, Point3 c, Point3 d, Point3 e, Lift lift) {
     const N ex = lift(e.x), ey = lift(e.y), ez = lift(e.z);
-    return sign_of(insphere_of_differences<N>(
-        {lift(a.x) - ex, lift(a.y) - ey, lift(a.z) - ez, lift(b.x) - ex, lift(b.y) - ey,
-         lift(b.z) - ez, lift(c.x) - ex, lift(c.y) - ey, lift(c.z) - ez, lift(d.x) - ex,
-         lift(d.y) - ey, lift(d.z) - ez}));
+    return sign_of(insphere_of_differences<N>({lift(a.x) - ex, lift(a.y) - ey, lift(a.z) - ez,
+                                               lift(b.x) - ex, lift(b.y) - ey, lift(b.z) - ez,
+                                               lift(c.x) - ex, lift(c.y) - ey, lift(c.z) - ez,
+                                               lift(d.x) - ex, lift(d.y) - ey, lift(d.z) - ez}));
 }
 
 }  // namespace exidel::detail

@@ -10,11 +10,13 @@
 #include <limits>
 
 #if defined(__FAST_MATH__)
-#error "exidel's exact predicates must not be compiled with -ffast-math (or -Ofast): it breaks error-free transformations. Compile the exidel library without it; your own code may use it."
+#error \
+    "exidel's exact predicates must not be compiled with -ffast-math (or -Ofast): it breaks error-free transformations. Compile the exidel library without it; your own code may use it."
 #endif
 
 #if defined(__FLT_EVAL_METHOD__) && __FLT_EVAL_METHOD__ != 0
-#error "exidel's exact predicates need double arithmetic evaluated in double (FLT_EVAL_METHOD == 0), not x87 extended precision."
+#error \
+    "exidel's exact predicates need double arithmetic evaluated in double (FLT_EVAL_METHOD == 0), not x87 extended precision."
 #endif
 
 static_assert(std::numeric_limits<double>::is_iec559, "exidel needs IEEE 754 binary64 doubles");

@@ -71,8 +71,8 @@ struct MpfrLift {
 MpfrKernel::MpfrKernel(unsigned bits) : bits_(bits) {
     if (bits < min_bits || bits > max_bits) {
         throw std::invalid_argument("MpfrKernel: precision must be in [" +
-                                    std::to_string(min_bits) + ", " +
-                                    std::to_string(max_bits) + "] bits");
+                                    std::to_string(min_bits) + ", " + std::to_string(max_bits) +
+                                    "] bits");
     }
 }
 
@@ -110,8 +110,7 @@ Sign MpfrKernel::incircle(Point2 a, Point2 b, Point2 c, Point2 d) const {
 }
 
 Sign MpfrKernel::incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d) const {
-    return detail::in_standard_environment<incircle_cosine_mpfr>(a, b, c, d,
-                                                                 mpfr_prec_t{bits_});
+    return detail::in_standard_environment<incircle_cosine_mpfr>(a, b, c, d, mpfr_prec_t{bits_});
 }
 
 Sign MpfrKernel::compare_distance(Point2 c, Point2 p, Point2 q) const {

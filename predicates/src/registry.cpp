@@ -73,8 +73,8 @@ std::string kernel_help() { return format_help(entries); }
 std::optional<AnyKernel> parse_kernel(std::string_view name, std::string& error) {
     error.clear();
     std::optional<AnyKernel> found;
-#define EXIDEL_KERNEL_PARSE_(K, spelling, summary)                        \
-    if (!found && error.empty()) {                                        \
+#define EXIDEL_KERNEL_PARSE_(K, spelling, summary)                              \
+    if (!found && error.empty()) {                                              \
         if (auto k = make_kernel<K>(name, error)) found.emplace(std::move(*k)); \
     }
     EXIDEL_KERNELS(EXIDEL_KERNEL_PARSE_)

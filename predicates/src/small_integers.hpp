@@ -152,7 +152,9 @@ inline U256 add_wide(const U256& a, const U256& b) noexcept {
 inline int incircle_wide_sign(const std::int64_t (&d)[6]) noexcept {
     static_assert(2 * wide_bits + 1 <= 126, "a lift or a cross fits in 127 bits");
     const auto [adx, ady, bdx, bdy, cdx, cdy] = d;
-    const auto lift = [](std::int64_t x, std::int64_t y) { return u128(i128{x} * x + i128{y} * y); };
+    const auto lift = [](std::int64_t x, std::int64_t y) {
+        return u128(i128{x} * x + i128{y} * y);
+    };
     const auto cross = [](std::int64_t p, std::int64_t q, std::int64_t r, std::int64_t s) {
         return i128{p} * q - i128{r} * s;
     };
@@ -162,7 +164,8 @@ inline int incircle_wide_sign(const std::int64_t (&d)[6]) noexcept {
     U256 positive{0, 0}, negative{0, 0};
     for (int i = 0; i < 3; ++i) {
         const U256 term = mul_wide(lifts[i], u128(crosses[i] < 0 ? -crosses[i] : crosses[i]));
-        (crosses[i] < 0 ? negative : positive) = add_wide(crosses[i] < 0 ? negative : positive, term);
+        (crosses[i] < 0 ? negative : positive) =
+            add_wide(crosses[i] < 0 ? negative : positive, term);
     }
     return (negative < positive) - (positive < negative);
 }
@@ -173,7 +176,9 @@ inline int incircle_wide_sign(const std::int64_t (&d)[6]) noexcept {
 inline int cosine_small_sign(const std::int64_t (&d)[8]) noexcept {
     static_assert(2 * small_bits + 1 <= 63, "a squared length or |u| fits in 64 bits");
     const auto [adx, ady, bdx, bdy, acx, acy, bcx, bcy] = d;
-    const auto magnitude = [](std::int64_t v) { return static_cast<std::uint64_t>(v < 0 ? -v : v); };
+    const auto magnitude = [](std::int64_t v) {
+        return static_cast<std::uint64_t>(v < 0 ? -v : v);
+    };
     const auto ad2 = static_cast<std::uint64_t>(adx * adx + ady * ady);
     const auto bd2 = static_cast<std::uint64_t>(bdx * bdx + bdy * bdy);
     const auto ac2 = static_cast<std::uint64_t>(acx * acx + acy * acy);

@@ -147,8 +147,7 @@ int add_skip_rules(const std::string& source, std::map<std::string, Rational>& v
 int unlisted_constants(const std::string& header, const std::map<std::string, Rational>& values) {
     const std::regex declaration(R"(inline\s+constexpr\s+double\s+(\w+)\s*=)");
     int missing = 0;
-    for (std::sregex_iterator it(header.begin(), header.end(), declaration), end; it != end;
-         ++it) {
+    for (std::sregex_iterator it(header.begin(), header.end(), declaration), end; it != end; ++it) {
         const std::string name = (*it)[1];
         if (name != "epsilon" && !values.contains(name)) {
             std::cout << "FAIL " << name << ": in constants.hpp but not checked by "
@@ -220,10 +219,10 @@ int main(int argc, char** argv) {
             if (!condition.empty()) conditional[name].insert(condition);
             std::cout << (ok ? "ok   " : "FAIL ") << name << " = " << show(code)
                       << (kind == "min" ? " >= " : " <= ") << show(proven)
-                      << (condition.empty() ? " (proven"
-                                            : " (proven if " + condition + " holds")
-                      << (ok ? "" : "; the code's value is outside the proven range, by "
-                                        + show(abs(proven - code) / proven) + " relative")
+                      << (condition.empty() ? " (proven" : " (proven if " + condition + " holds")
+                      << (ok ? ""
+                             : "; the code's value is outside the proven range, by " +
+                                   show(abs(proven - code) / proven) + " relative")
                       << ")\n";
             failures += ok ? 0 : 1;
         }

@@ -35,9 +35,9 @@ static_assert(sizeof(Point3) == 3 * sizeof(double) && alignof(Point3) == alignof
 /// Points of one argument: n rows, or a single point (shape (2,), or (3,) in space) that
 /// broadcasts.
 struct Points {
-    DoubleArray array;  ///< keeps the data alive
-    const Point2* data = nullptr;    ///< the rows, for points of the plane
-    const Point3* data3 = nullptr;   ///< the rows, for points of space (dimension 3)
+    DoubleArray array;              ///< keeps the data alive
+    const Point2* data = nullptr;   ///< the rows, for points of the plane
+    const Point3* data3 = nullptr;  ///< the rows, for points of space (dimension 3)
     std::size_t rows = 0;
     bool single = false;  ///< shape (2,) or (3,): one point for every row of the other arguments
 

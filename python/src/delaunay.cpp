@@ -51,7 +51,8 @@ delaunay::Options to_options(const std::string& algorithm, const std::string& in
 
 py::dict counters_dict(const delaunay::Counters& c) {
     py::dict d;
-    c.for_each([&](std::string_view name, std::uint64_t value) { d[py::str(std::string(name))] = value; });
+    c.for_each(
+        [&](std::string_view name, std::uint64_t value) { d[py::str(std::string(name))] = value; });
     return d;
 }
 
@@ -66,10 +67,12 @@ py::dict result_dict(delaunay::Result&& r, bool counters) {
         const delaunay::Failure& f = *r.failure;
         py::dict failure;
         failure["kind"] = std::string(delaunay::to_string(f.kind));
-        failure["input_index"] = f.input_index == delaunay::no_index ? py::object(py::none())
-                                                                      : py::object(py::int_(f.input_index));
-        failure["insertion"] = f.insertion == delaunay::no_index ? py::object(py::none())
-                                                                  : py::object(py::int_(f.insertion));
+        failure["input_index"] = f.input_index == delaunay::no_index
+                                     ? py::object(py::none())
+                                     : py::object(py::int_(f.input_index));
+        failure["insertion"] = f.insertion == delaunay::no_index
+                                   ? py::object(py::none())
+                                   : py::object(py::int_(f.insertion));
         failure["message"] = f.message;
         d["failure"] = failure;
         return d;
@@ -101,9 +104,9 @@ py::dict triangulate(py::object points_object, const std::string& kernel_name,
         py::gil_scoped_release release;
         result = std::visit(
             [&](const auto& k) {
-                return counters
-                           ? delaunay::triangulate<delaunay::Instrumentation::counters>(points.span(), k, options)
-                           : delaunay::triangulate(points.span(), k, options);
+                return counters ? delaunay::triangulate<delaunay::Instrumentation::counters>(
+                                      points.span(), k, options)
+                                : delaunay::triangulate(points.span(), k, options);
             },
             kernel);
     }
@@ -158,7 +161,8 @@ void derive_topology(std::span<const Point2> p, delaunay::Triangulation& t) {
         if (t.halfedges[e] >= 0) continue;
         const std::uint32_t a = t.triangles[e];
         boundary_from.emplace(a, t.triangles[delaunay::next_halfedge(e)]);
-        if (!first || p[a].x < p[*first].x || (p[a].x == p[*first].x && p[a].y < p[*first].y)) first = a;
+        if (!first || p[a].x < p[*first].x || (p[a].x == p[*first].x && p[a].y < p[*first].y))
+            first = a;
     }
     if (!first) return;
     std::uint32_t v = *first;
@@ -262,7 +266,8 @@ py::dict certify_arrays(py::object points_object, IndexArray triangles, IndexArr
     t.halfedges.resize(static_cast<std::size_t>(halfedges.size()));
     for (std::size_t i = 0; i < t.halfedges.size(); ++i) {
         const std::int64_t h = halfedges.data()[i];
-        t.halfedges[i] = h < -1 || h > 0x7fffffffLL ? std::int32_t{0x7fffffff} : static_cast<std::int32_t>(h);
+        t.halfedges[i] =
+            h < -1 || h > 0x7fffffffLL ? std::int32_t{0x7fffffff} : static_cast<std::int32_t>(h);
     }
     t.hull = to_indices(hull);
     t.vertex_of_input = to_indices(vertex_of_input);
@@ -288,8 +293,8 @@ void bind_delaunay(py::module_& m) {
     m.def("certify_simplices", &certify_simplices, py::arg("points"), py::arg("simplices"),
           py::arg("reorient") = true);
     m.def("certify_arrays", &certify_arrays, py::arg("points"), py::arg("triangles"),
-          py::arg("halfedges"), py::arg("hull"), py::arg("vertex_of_input"),
-          py::arg("duplicates"), py::arg("collinear"));
+          py::arg("halfedges"), py::arg("hull"), py::arg("vertex_of_input"), py::arg("duplicates"),
+          py::arg("collinear"));
 }
 
 }  // namespace exidel::python

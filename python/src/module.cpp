@@ -33,9 +33,9 @@ Points to_points(const py::handle& object, const char* argument, int dimension) 
         for (py::ssize_t k = 0; k < p.array.ndim(); ++k) {
             shape += (k ? ", " : "") + std::to_string(p.array.shape(k));
         }
-        throw py::value_error(std::string(argument) + ": expected shape (n, " + std::to_string(dimension) +
-                              ") or (" + std::to_string(dimension) + ",), got " + shape +
-                              (p.array.ndim() == 1 ? ",)" : ")"));
+        throw py::value_error(std::string(argument) + ": expected shape (n, " +
+                              std::to_string(dimension) + ") or (" + std::to_string(dimension) +
+                              ",), got " + shape + (p.array.ndim() == 1 ? ",)" : ")"));
     }
     const double* c = p.array.data();
     for (std::size_t i = 0; i < p.rows; ++i) {
@@ -45,8 +45,8 @@ Points to_points(const py::handle& object, const char* argument, int dimension) 
             for (int k = 0; k < dimension; ++k) {
                 values += (k ? ", " : "") + py::repr(py::float_(row[k])).cast<std::string>();
             }
-            throw py::value_error(std::string(argument) + ": row " + std::to_string(i) + " is not finite (" +
-                                  values + ")");
+            throw py::value_error(std::string(argument) + ": row " + std::to_string(i) +
+                                  " is not finite (" + values + ")");
         }
     }
     if (dimension == 3) {
@@ -112,11 +112,14 @@ PYBIND11_MODULE(_core, m) {
     for (std::string_view k : exidel::build_info().kernels) kernels.append(py::str(std::string(k)));
     m.attr("kernel_spellings") = kernels;
     py::list algorithms;
-    for (const auto& a : exidel::delaunay::algorithms()) algorithms.append(py::str(std::string(a.name)));
+    for (const auto& a : exidel::delaunay::algorithms())
+        algorithms.append(py::str(std::string(a.name)));
     m.attr("algorithms") = algorithms;
-    m.def("kernel_name", [](const std::string& name) { return exidel::kernel_name(to_kernel(name)); },
-          "The canonical name of a kernel spelling (ValueError for an unknown one).");
-    m.def("kernel_is_exact", [](const std::string& name) { return exidel::kernel_is_exact(to_kernel(name)); });
+    m.def(
+        "kernel_name", [](const std::string& name) { return exidel::kernel_name(to_kernel(name)); },
+        "The canonical name of a kernel spelling (ValueError for an unknown one).");
+    m.def("kernel_is_exact",
+          [](const std::string& name) { return exidel::kernel_is_exact(to_kernel(name)); });
     m.def("build_info", [] {
         const exidel::BuildInfo& b = exidel::build_info();
         py::dict d;

@@ -1,7 +1,7 @@
 // exidel.orient2d, incircle, incircle_cosine, compare_distance, and in space orient3d and
-// insphere: one predicate over rows of point arrays. The loop runs here with the GIL released, compiled once per kernel type
-// (one std::visit per call, none per row); a (2,) or (1, 2) argument broadcasts. The
-// adaptive kernel on arrays that do not broadcast uses the batched predicates.
+// insphere: one predicate over rows of point arrays. The loop runs here with the GIL released,
+// compiled once per kernel type (one std::visit per call, none per row); a (2,) or (1, 2) argument
+// broadcasts. The adaptive kernel on arrays that do not broadcast uses the batched predicates.
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -67,7 +67,8 @@ void evaluate_batch(const std::array<const Point2*, N>& data, std::int8_t* out, 
 /// and calls loop(kernel, points, stride, out, rows) once per call, inside one std::visit
 /// and with the GIL released.
 template <std::size_t N, class Loop>
-py::array_t<std::int8_t> over_rows(const std::array<py::object, N>& args, const std::array<const char*, N>& names,
+py::array_t<std::int8_t> over_rows(const std::array<py::object, N>& args,
+                                   const std::array<const char*, N>& names,
                                    const std::string& kernel_name, int dimension, Loop loop) {
     const AnyKernel kernel = to_kernel(kernel_name);
     std::array<Points, N> points;
@@ -90,11 +91,13 @@ template <Predicate P, std::size_t N>
 py::array_t<std::int8_t> vectorised(const std::array<py::object, N>& args,
                                     const std::array<const char*, N>& names,
                                     const std::string& kernel_name) {
-    const auto loop = [](const auto& k, const std::array<Points, N>& points, const std::array<std::size_t, N>& stride,
-                         std::int8_t* out, std::size_t rows) {
+    const auto loop = [](const auto& k, const std::array<Points, N>& points,
+                         const std::array<std::size_t, N>& stride, std::int8_t* out,
+                         std::size_t rows) {
         std::array<const Point2*, N> data;
         for (std::size_t i = 0; i < N; ++i) data[i] = points[i].data;
-        const bool broadcasts = rows > 1 && std::find(stride.begin(), stride.end(), 0) != stride.end();
+        const bool broadcasts =
+            rows > 1 && std::find(stride.begin(), stride.end(), 0) != stride.end();
         if constexpr (std::is_same_v<std::decay_t<decltype(k)>, AdaptiveKernel>) {
             if (!broadcasts) return evaluate_batch<P>(data, out, rows);
         }
@@ -108,8 +111,9 @@ template <SpacePredicate P, std::size_t N>
 py::array_t<std::int8_t> vectorised(const std::array<py::object, N>& args,
                                     const std::array<const char*, N>& names,
                                     const std::string& kernel_name) {
-    const auto loop = [](const auto& k, const std::array<Points, N>& points, const std::array<std::size_t, N>& stride,
-                         std::int8_t* out, std::size_t rows) {
+    const auto loop = [](const auto& k, const std::array<Points, N>& points,
+                         const std::array<std::size_t, N>& stride, std::int8_t* out,
+                         std::size_t rows) {
         std::array<Point3, N> q;
         for (std::size_t i = 0; i < rows; ++i) {
             for (std::size_t a = 0; a < N; ++a) q[a] = points[a].data3[i * stride[a]];
@@ -135,10 +139,12 @@ constexpr const char* space_doc =
 
 /// The benchmark's reference: the C++ loop alone over points already in memory (the
 /// arguments converted beforehand, no result array allocated per call), in seconds.
-double loop_seconds(const std::string& predicate, const py::tuple& args, const std::string& kernel_name) {
+double loop_seconds(const std::string& predicate, const py::tuple& args,
+                    const std::string& kernel_name) {
     const AnyKernel kernel = to_kernel(kernel_name);
     const auto p = predicate_from_name(predicate);
-    if (!p || point_count(*p) != args.size()) throw py::value_error("predicate and arguments do not match");
+    if (!p || point_count(*p) != args.size())
+        throw py::value_error("predicate and arguments do not match");
     std::vector<Points> points;
     for (std::size_t k = 0; k < args.size(); ++k) points.push_back(to_points(args[k], "argument"));
     const std::size_t rows = points[0].rows;
@@ -152,11 +158,12 @@ double loop_seconds(const std::string& predicate, const py::tuple& args, const s
         [&](const auto& k) {
             if (*p == Predicate::orient2d) {
                 evaluate_rows<Predicate::orient2d, std::decay_t<decltype(k)>, 3>(
-                    k, {points[0].data, points[1].data, points[2].data}, {1, 1, 1}, out.data(), rows);
+                    k, {points[0].data, points[1].data, points[2].data}, {1, 1, 1}, out.data(),
+                    rows);
             } else if (*p == Predicate::incircle) {
                 evaluate_rows<Predicate::incircle, std::decay_t<decltype(k)>, 4>(
-                    k, {points[0].data, points[1].data, points[2].data, points[3].data}, {1, 1, 1, 1},
-                    out.data(), rows);
+                    k, {points[0].data, points[1].data, points[2].data, points[3].data},
+                    {1, 1, 1, 1}, out.data(), rows);
             } else {
                 throw std::invalid_argument("loop_seconds times orient2d and incircle");
             }
@@ -175,7 +182,9 @@ void bind_predicates(py::module_& m) {
         },
         py::arg("a"), py::arg("b"), py::arg("c"), py::arg("kernel") = "adaptive",
         (std::string("Sign of the orientation of (a, b, c): +1 counter-clockwise, -1 clockwise,"
-                     " 0 collinear.") + kernel_doc).c_str());
+                     " 0 collinear.") +
+         kernel_doc)
+            .c_str());
     m.def(
         "incircle",
         [](py::object a, py::object b, py::object c, py::object d, const std::string& kernel) {
@@ -184,7 +193,9 @@ void bind_predicates(py::module_& m) {
         py::arg("a"), py::arg("b"), py::arg("c"), py::arg("d"), py::arg("kernel") = "adaptive",
         (std::string("Shewchuk's in-circle determinant: +1 when d is inside the circle through"
                      " a, b, c (counter-clockwise), -1 outside, 0 on it; the sign flips for a"
-                     " clockwise abc.") + kernel_doc).c_str());
+                     " clockwise abc.") +
+         kernel_doc)
+            .c_str());
     m.def(
         "incircle_cosine",
         [](py::object a, py::object b, py::object c, py::object d, const std::string& kernel) {
@@ -195,7 +206,9 @@ void bind_predicates(py::module_& m) {
         (std::string("Cai's cosine in-circle test (the paper's Section 5): +1 when d is inside"
                      " the circle through a, b, c. An in-circle test only when c and d are"
                      " strictly on opposite sides of line ab (kernel.hpp states the"
-                     " precondition).") + kernel_doc).c_str());
+                     " precondition).") +
+         kernel_doc)
+            .c_str());
     m.def(
         "compare_distance",
         [](py::object c, py::object p, py::object q, const std::string& kernel) {
@@ -206,7 +219,8 @@ void bind_predicates(py::module_& m) {
     m.def(
         "orient3d",
         [](py::object a, py::object b, py::object c, py::object d, const std::string& kernel) {
-            return vectorised<SpacePredicate::orient3d, 4>({a, b, c, d}, {"a", "b", "c", "d"}, kernel);
+            return vectorised<SpacePredicate::orient3d, 4>({a, b, c, d}, {"a", "b", "c", "d"},
+                                                           kernel);
         },
         py::arg("a"), py::arg("b"), py::arg("c"), py::arg("d"), py::arg("kernel") = "adaptive",
         (std::string("Shewchuk's orient3d: the sign of det(a - d, b - d, c - d); +1 when d lies"
@@ -216,10 +230,13 @@ void bind_predicates(py::module_& m) {
             .c_str());
     m.def(
         "insphere",
-        [](py::object a, py::object b, py::object c, py::object d, py::object e, const std::string& kernel) {
-            return vectorised<SpacePredicate::insphere, 5>({a, b, c, d, e}, {"a", "b", "c", "d", "e"}, kernel);
+        [](py::object a, py::object b, py::object c, py::object d, py::object e,
+           const std::string& kernel) {
+            return vectorised<SpacePredicate::insphere, 5>({a, b, c, d, e},
+                                                           {"a", "b", "c", "d", "e"}, kernel);
         },
-        py::arg("a"), py::arg("b"), py::arg("c"), py::arg("d"), py::arg("e"), py::arg("kernel") = "adaptive",
+        py::arg("a"), py::arg("b"), py::arg("c"), py::arg("d"), py::arg("e"),
+        py::arg("kernel") = "adaptive",
         (std::string("Shewchuk's insphere: +1 when e is inside the sphere through a, b, c, d"
                      " with orient3d(a, b, c, d) positive, -1 outside, 0 on it; the sign flips"
                      " with orient3d(a, b, c, d). The opposite of CGAL's"

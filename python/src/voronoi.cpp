@@ -112,7 +112,8 @@ public:
         delaunay::ClippedVoronoi c;
         {
             py::gil_scoped_release release;
-            c = delaunay::clip(diagram_, points_, triangulation_, delaunay::Box{xmin, ymin, xmax, ymax});
+            c = delaunay::clip(diagram_, points_, triangulation_,
+                               delaunay::Box{xmin, ymin, xmax, ymax});
         }
         py::dict d;
         cells_into(c, d);
@@ -161,8 +162,8 @@ void bind_voronoi(py::module_& m) {
         .def("clip", &VoronoiData::clip, py::arg("xmin"), py::arg("ymin"), py::arg("xmax"),
              py::arg("ymax"));
     py::list statuses;
-    for (auto s : {CircumcenterStatus::ok, CircumcenterStatus::collinear, CircumcenterStatus::overflow,
-                   CircumcenterStatus::non_finite_input}) {
+    for (auto s : {CircumcenterStatus::ok, CircumcenterStatus::collinear,
+                   CircumcenterStatus::overflow, CircumcenterStatus::non_finite_input}) {
         statuses.append(py::str(std::string(to_string(s))));
     }
     m.attr("circumcenter_statuses") = statuses;

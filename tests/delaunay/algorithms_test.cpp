@@ -109,8 +109,8 @@ TEST_P(EveryAlgorithm, LyingKernelGivesAResultOrATypedFailure) {
     EXPECT_TRUE(rc::check(std::string(GetParam().name) + ", lying", [&] {
         const auto s = *test::gen_point_set(120);
         LyingKernel k;
-        k.mode = *rc::gen::element(LyingKernel::positive, LyingKernel::negative,
-                                   LyingKernel::zero, LyingKernel::random, LyingKernel::random,
+        k.mode = *rc::gen::element(LyingKernel::positive, LyingKernel::negative, LyingKernel::zero,
+                                   LyingKernel::random, LyingKernel::random,
                                    LyingKernel::random_orient, LyingKernel::always_flip);
         k.rng.state = *rc::gen::arbitrary<std::uint64_t>();
         const Options o = *gen_options(GetParam());
@@ -141,9 +141,8 @@ std::string name_of(const ::testing::TestParamInfo<AlgorithmInfo>& info) {
     return name;
 }
 
-INSTANTIATE_TEST_SUITE_P(Registry, EveryAlgorithm, ::testing::ValuesIn(algorithms().begin(),
-                                                                       algorithms().end()),
-                         name_of);
+INSTANTIATE_TEST_SUITE_P(Registry, EveryAlgorithm,
+                         ::testing::ValuesIn(algorithms().begin(), algorithms().end()), name_of);
 
 TEST(AlgorithmRegistry, NamesRoundTripAndAreListed) {
     ASSERT_FALSE(algorithms().empty());

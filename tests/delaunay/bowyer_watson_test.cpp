@@ -54,7 +54,9 @@ TEST(Brio, HilbertKeysVisitNeighbouringCellsInTurn) {
     std::vector<std::pair<std::uint32_t, std::pair<int, int>>> cells;
     for (int i = 0; i < 16; ++i) {
         for (int j = 0; j < 16; ++j) {
-            cells.push_back({exidel::delaunay::detail::hilbert_key(std::uint32_t(i) << 12, std::uint32_t(j) << 12), {i, j}});
+            cells.push_back({exidel::delaunay::detail::hilbert_key(std::uint32_t(i) << 12,
+                                                                   std::uint32_t(j) << 12),
+                             {i, j}});
         }
     }
     std::sort(cells.begin(), cells.end());
@@ -64,8 +66,8 @@ TEST(Brio, HilbertKeysVisitNeighbouringCellsInTurn) {
         const auto [x1, y1] = cells[k].second;
         EXPECT_EQ(std::abs(x1 - x0) + std::abs(y1 - y0), 1) << "step " << k;
     }
-    EXPECT_EQ(cells.front().second, (std::pair<int, int>{0, 0}));     // starts lower left
-    EXPECT_EQ(cells.back().second, (std::pair<int, int>{15, 0}));     // ends lower right
+    EXPECT_EQ(cells.front().second, (std::pair<int, int>{0, 0}));  // starts lower left
+    EXPECT_EQ(cells.back().second, (std::pair<int, int>{15, 0}));  // ends lower right
 }
 
 TEST(Brio, OrderIsAPermutationAndReproducible) {
@@ -88,7 +90,8 @@ TEST(Brio, OrderIsAPermutationAndReproducible) {
 
 TEST(BowyerWatson, TheVertexAtInfinityHandlesHullDegeneracies) {
     // Points on the first triangle's edges and on later hull edges.
-    expect_exact({{0, 0}, {4, 0}, {0, 4}, {1, 0}, {2, 0}, {3, 0}, {0, 1}, {0, 2}, {2, 2}, {1, 3}}, "on hull edges");
+    expect_exact({{0, 0}, {4, 0}, {0, 4}, {1, 0}, {2, 0}, {3, 0}, {0, 1}, {0, 2}, {2, 2}, {1, 3}},
+                 "on hull edges");
     // A convex polygon and one point far outside that sees most of its edges.
     std::vector<Point2> fan;
     for (int i = 0; i < 40; ++i) fan.push_back({std::cos(i * 0.05), std::sin(i * 0.05)});
@@ -100,13 +103,16 @@ TEST(BowyerWatson, TheVertexAtInfinityHandlesHullDegeneracies) {
         for (int j = 0; j < 12; ++j) grid.push_back({double(i), double(j)});
     }
     expect_exact(grid, "12 x 12 grid");
-    expect_exact({{5, 0}, {-5, 0}, {0, 5}, {0, -5}, {3, 4}, {-3, 4}, {3, -4}, {-3, -4}, {4, 3}, {-4, -3}}, "on one circle");
+    expect_exact(
+        {{5, 0}, {-5, 0}, {0, 5}, {0, -5}, {3, 4}, {-3, 4}, {3, -4}, {-3, -4}, {4, 3}, {-4, -3}},
+        "on one circle");
     // Collinear but one, and collinear with duplicates.
     std::vector<Point2> line;
     for (int i = 0; i < 30; ++i) line.push_back({double(i), 2.0 * i});
     line.push_back({3, -1});
     expect_exact(line, "collinear plus one");
-    const Result all_on_line = triangulate(std::vector<Point2>{{0, 0}, {2, 2}, {1, 1}, {2, 2}}, AdaptiveKernel{}, bw());
+    const Result all_on_line =
+        triangulate(std::vector<Point2>{{0, 0}, {2, 2}, {1, 1}, {2, 2}}, AdaptiveKernel{}, bw());
     ASSERT_TRUE(all_on_line.ok());
     EXPECT_TRUE(all_on_line.triangulation.collinear);
     EXPECT_EQ(all_on_line.triangulation.hull, (std::vector<std::uint32_t>{0, 2, 1}));
@@ -128,11 +134,13 @@ TEST(BowyerWatson, WorkOnUniformPointsIsWhatBrioPromises) {
     EXPECT_LT(double(r.counters.location_steps) / n, 10.0);
     EXPECT_GT(double(r.counters.triangles_destroyed) / n, 2.0);
     EXPECT_LT(double(r.counters.triangles_destroyed) / n, 6.0);
-    EXPECT_EQ(r.counters.triangles_created - r.counters.triangles_destroyed, r.triangulation.triangle_count());
+    EXPECT_EQ(r.counters.triangles_created - r.counters.triangles_destroyed,
+              r.triangulation.triangle_count());
     EXPECT_EQ(r.counters.lawson_flips, 0u);
     // Every in-circle test with the determinant policy; the cosine policy answers some
     // by one orientation (the nesting argument) and tests the rest under Theorem 1.
-    const Result c = triangulate<Instrumentation::theorem1>(pts, AdaptiveKernel{}, bw(InCirclePolicy::cosine));
+    const Result c =
+        triangulate<Instrumentation::theorem1>(pts, AdaptiveKernel{}, bw(InCirclePolicy::cosine));
     ASSERT_TRUE(c.ok());
     EXPECT_EQ(c.counters.theorem1_violations, 0u);
     EXPECT_GT(c.counters.theorem1_checks, 0u);
@@ -192,7 +200,9 @@ struct WholeSphereKernel {
     Sign incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d) const {
         return lies(d) ? Sign::positive : AdaptiveKernel{}.incircle_cosine(a, b, c, d);
     }
-    Sign compare_distance(Point2 a, Point2 b, Point2 c) const { return AdaptiveKernel{}.compare_distance(a, b, c); }
+    Sign compare_distance(Point2 a, Point2 b, Point2 c) const {
+        return AdaptiveKernel{}.compare_distance(a, b, c);
+    }
 };
 
 TEST(BowyerWatsonRegression, ACavityOfTheWholeSphereIsATypedFailure) {

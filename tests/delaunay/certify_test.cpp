@@ -49,7 +49,8 @@ std::size_t flippable_edge(const std::vector<Point2>& pts, const Triangulation& 
         if (t.halfedges[e] < 0) continue;
         const auto tw = static_cast<std::size_t>(t.halfedges[e]);
         const Point2 a = pts[t.triangles[e]], b = pts[t.triangles[next_halfedge(e)]];
-        const Point2 c = pts[t.triangles[prev_halfedge(e)]], d = pts[t.triangles[prev_halfedge(tw)]];
+        const Point2 c = pts[t.triangles[prev_halfedge(e)]],
+                     d = pts[t.triangles[prev_halfedge(tw)]];
         if (AdaptiveKernel::orient2d(c, d, a) != AdaptiveKernel::orient2d(c, d, b) &&
             AdaptiveKernel::orient2d(c, d, a) != Sign::zero &&
             AdaptiveKernel::orient2d(c, d, b) != Sign::zero &&
@@ -79,7 +80,8 @@ TEST(Certify, CatchesAFlippedDelaunayEdge) {
     ASSERT_TRUE(cert.has(FindingKind::not_delaunay)) << cert.summary();
     const Finding& f = cert.findings.front();
     const auto fe = static_cast<std::size_t>(f.index);
-    EXPECT_EQ(test::make_edge(t.triangles[fe], t.triangles[next_halfedge(fe)]), test::make_edge(c, d));
+    EXPECT_EQ(test::make_edge(t.triangles[fe], t.triangles[next_halfedge(fe)]),
+              test::make_edge(c, d));
 }
 
 TEST(Certify, CatchesADroppedPoint) {
@@ -140,7 +142,9 @@ TEST(Certify, CatchesADroppedTriangleAsABrokenBoundary) {
     // Remove an interior triangle (no boundary edge): a hole.
     std::size_t tri = 0;
     for (; tri < t.triangle_count(); ++tri) {
-        if (t.halfedges[3 * tri] >= 0 && t.halfedges[3 * tri + 1] >= 0 && t.halfedges[3 * tri + 2] >= 0) break;
+        if (t.halfedges[3 * tri] >= 0 && t.halfedges[3 * tri + 1] >= 0 &&
+            t.halfedges[3 * tri + 2] >= 0)
+            break;
     }
     t.triangles.erase(t.triangles.begin() + 3 * tri, t.triangles.begin() + 3 * tri + 3);
     t.halfedges.resize(t.triangles.size());
@@ -179,7 +183,8 @@ TEST(Certify, CollinearFlagMustMatchThePoints) {
 
 // Every single-entry corruption of a valid triangulation that changes anything is found.
 RC_GTEST_PROP(Certify, AnyCorruptedEntryIsFound, ()) {
-    const auto pts = uniform(*rc::gen::inRange<std::size_t>(4, 40), *rc::gen::arbitrary<std::uint32_t>());
+    const auto pts =
+        uniform(*rc::gen::inRange<std::size_t>(4, 40), *rc::gen::arbitrary<std::uint32_t>());
     Result r = triangulate(pts, AdaptiveKernel{});
     RC_ASSERT(r.ok());
     Triangulation t = r.triangulation;
@@ -191,7 +196,8 @@ RC_GTEST_PROP(Certify, AnyCorruptedEntryIsFound, ()) {
         RC_PRE(v != t.triangles[e]);
         t.triangles[e] = v;
     } else {
-        const auto h = *rc::gen::inRange<std::int32_t>(-1, static_cast<std::int32_t>(t.halfedges.size()));
+        const auto h =
+            *rc::gen::inRange<std::int32_t>(-1, static_cast<std::int32_t>(t.halfedges.size()));
         RC_PRE(h != t.halfedges[e]);
         t.halfedges[e] = h;
     }

@@ -26,7 +26,7 @@
 namespace exidel::test {
 
 using Edge = std::pair<std::uint32_t, std::uint32_t>;  // (smaller, larger) input index
-using Tri = std::array<std::uint32_t, 3>;               // sorted vertex triple
+using Tri = std::array<std::uint32_t, 3>;              // sorted vertex triple
 
 inline Edge make_edge(std::uint32_t a, std::uint32_t b) { return a < b ? Edge{a, b} : Edge{b, a}; }
 inline Tri make_tri(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
@@ -62,7 +62,8 @@ inline EdgeSets cgal_edge_sets(std::span<const Point2> points) {
     using DT = CGAL::Delaunay_triangulation_2<Epick, Tds>;
     const auto first = first_occurrence(points);
     std::vector<std::pair<Epick::Point_2, std::uint32_t>> input;
-    for (std::uint32_t i = 0; i < points.size(); ++i) input.emplace_back(to_cgal(points[i]), first[i]);
+    for (std::uint32_t i = 0; i < points.size(); ++i)
+        input.emplace_back(to_cgal(points[i]), first[i]);
     DT dt(input.begin(), input.end());
     EdgeSets s;
     s.collinear = dt.dimension() < 2;
@@ -81,7 +82,8 @@ inline EdgeSets cgal_edge_sets(std::span<const Point2> points) {
         }
     }
     for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
-        s.triangles.insert(make_tri(f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()));
+        s.triangles.insert(
+            make_tri(f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()));
     }
     return s;
 }
@@ -106,7 +108,8 @@ inline EdgeSets edge_sets(std::span<const Point2> points, const delaunay::Triang
             ++s.free_edges;
         }
     }
-    for (std::size_t e = 0; e < T.size(); e += 3) s.triangles.insert(make_tri(T[e], T[e + 1], T[e + 2]));
+    for (std::size_t e = 0; e < T.size(); e += 3)
+        s.triangles.insert(make_tri(T[e], T[e + 1], T[e + 2]));
     return s;
 }
 

@@ -92,9 +92,10 @@ TEST(LawsonWork, FlipsFromTheSortedFanMatchThePapersLexicographicErosion) {
     ASSERT_TRUE(r.ok());
     const double lex = double(erosions(pts));
     EXPECT_NEAR(double(r.counters.lawson_flips) / lex, 1.0, 0.01);
-    std::printf("lawson, 4000 uniform points: %.2f flips per point (paper's order: %.2f "
-                "erosions)\n",
-                double(r.counters.lawson_flips) / 4000, lex / 4000);
+    std::printf(
+        "lawson, 4000 uniform points: %.2f flips per point (paper's order: %.2f "
+        "erosions)\n",
+        double(r.counters.lawson_flips) / 4000, lex / 4000);
 }
 
 // Every in-circle test of Lawson and of the sweep-hull is across an edge of two valid
@@ -109,8 +110,8 @@ TEST(FlippingAlgorithms, Theorem1HoldsAtEveryInCircleTestAndPoliciesAgree) {
     sets.push_back(circle);  // concentric integer circles: many cocircular quadruples
     for (const Algorithm a : {Algorithm::lawson, Algorithm::sweep_hull}) {
         for (const auto& pts : sets) {
-            const Result det = triangulate<Instrumentation::theorem1>(pts, AdaptiveKernel{},
-                                                                      with(a));
+            const Result det =
+                triangulate<Instrumentation::theorem1>(pts, AdaptiveKernel{}, with(a));
             const Result cos = triangulate<Instrumentation::theorem1>(
                 pts, AdaptiveKernel{}, with(a, InCirclePolicy::cosine));
             ASSERT_TRUE(det.ok() && cos.ok()) << to_string(a);
@@ -146,13 +147,13 @@ TEST(DivideAndConquerWork, AlternatingCutsDeleteFewerEdges) {
 // earlier points.
 TEST(FlippingAlgorithms, EndlessFlipsAreBounded) {
     const auto pts = uniform_points(60, 3);
-    const Result lawson = triangulate(pts, LyingKernel{LyingKernel::always_flip},
-                                      with(Algorithm::lawson));
+    const Result lawson =
+        triangulate(pts, LyingKernel{LyingKernel::always_flip}, with(Algorithm::lawson));
     ASSERT_FALSE(lawson.ok());
     EXPECT_EQ(lawson.failure->kind, FailureKind::flips_exceeded);
     EXPECT_NE(lawson.failure->message.find("1770"), std::string::npos) << lawson.failure->message;
-    const Result sweep = triangulate(pts, LyingKernel{LyingKernel::always_flip},
-                                     with(Algorithm::sweep_hull));
+    const Result sweep =
+        triangulate(pts, LyingKernel{LyingKernel::always_flip}, with(Algorithm::sweep_hull));
     ASSERT_FALSE(sweep.ok());
     EXPECT_EQ(sweep.failure->kind, FailureKind::flips_exceeded);
     EXPECT_NE(sweep.failure->message.find("insertion of point"), std::string::npos);
@@ -166,17 +167,31 @@ TEST(FlippingAlgorithms, EndlessFlipsAreBounded) {
 // (certify: not_ccw). Leaves of more than three points are now sorted first.
 TEST(DwyerRegression, UnsortedLeafOfNearlyCollinearPoints) {
     const std::vector<std::vector<Point2>> sets{
-        {{0x1.00000000000e4p-1, 0x1.000000000009ap-1}, {0x1.14ccccccccccdp+4, 0x1.14ccccccccccdp+4},
-         {0x1.800000000000ep+4, 0x1.800000000000fp+4}, {0x1p-1, 0x1p-1}, {0x1p-1, 0x1p-1},
-         {0x1p-1, 0x1p-1}, {0x1.000000000004p-1, 0x1.000000000004p-1},
-         {0x1.000000000008p-1, 0x1.000000000008p-1}, {0x1p-1, 0x1p-1}, {0x1p-1, 0x1p-1},
+        {{0x1.00000000000e4p-1, 0x1.000000000009ap-1},
+         {0x1.14ccccccccccdp+4, 0x1.14ccccccccccdp+4},
+         {0x1.800000000000ep+4, 0x1.800000000000fp+4},
+         {0x1p-1, 0x1p-1},
+         {0x1p-1, 0x1p-1},
+         {0x1p-1, 0x1p-1},
+         {0x1.000000000004p-1, 0x1.000000000004p-1},
+         {0x1.000000000008p-1, 0x1.000000000008p-1},
+         {0x1p-1, 0x1p-1},
+         {0x1p-1, 0x1p-1},
          {0x1.4856335aa011p+1, 0x1.4856335aa011p+1}},
-        {{0x1.00000000000e4p-1, 0x1.000000000009ap-1}, {0x1.14ccccccccccdp+4, 0x1.14ccccccccccdp+4},
-         {0x1.800000000000ep+4, 0x1.800000000000fp+4}, {0x1p-1, 0x1p-1}, {0x1p-1, 0x1p-1},
-         {0x1p-1, 0x1p-1}, {0x1.000000000004p-1, 0x1.000000000004p-1}, {0x1p-1, 0x1p-1},
-         {0x1p-1, 0x1p-1}, {0x1.00000000001p-1, 0x1.00000000001p-1},
-         {0x1.657521c849ad8p+2, 0x1.657521c849ad8p+2}, {0x1p-1, 0x1p-1},
-         {0x1.000000000014p-1, 0x1.000000000014p-1}, {0x1.000000000008p-1, 0x1.000000000008p-1}},
+        {{0x1.00000000000e4p-1, 0x1.000000000009ap-1},
+         {0x1.14ccccccccccdp+4, 0x1.14ccccccccccdp+4},
+         {0x1.800000000000ep+4, 0x1.800000000000fp+4},
+         {0x1p-1, 0x1p-1},
+         {0x1p-1, 0x1p-1},
+         {0x1p-1, 0x1p-1},
+         {0x1.000000000004p-1, 0x1.000000000004p-1},
+         {0x1p-1, 0x1p-1},
+         {0x1p-1, 0x1p-1},
+         {0x1.00000000001p-1, 0x1.00000000001p-1},
+         {0x1.657521c849ad8p+2, 0x1.657521c849ad8p+2},
+         {0x1p-1, 0x1p-1},
+         {0x1.000000000014p-1, 0x1.000000000014p-1},
+         {0x1.000000000008p-1, 0x1.000000000008p-1}},
     };
     for (const auto& pts : sets) {
         for (const AlgorithmInfo& a : algorithms()) {

@@ -97,8 +97,8 @@ TEST(DelaunayGolden, DefaultArraysAreThoseOfCommit7c2f955ForEveryThreadCount) {
             const Result r = triangulate(pts, AdaptiveKernel{}, o);
             ASSERT_TRUE(r.ok()) << g.input << ": " << r.failure->message;
             EXPECT_EQ(hash_arrays(r.triangulation), g.hash)
-                << g.input << ", " << threads << " threads, strategy "
-                << to_string(r.strategy) << ", " << r.strips << " strips";
+                << g.input << ", " << threads << " threads, strategy " << to_string(r.strategy)
+                << ", " << r.strips << " strips";
         }
     }
 }

@@ -40,7 +40,9 @@ struct LyingKernel {
     Sign incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d) const {
         return incircle(a, b, c, d);
     }
-    Sign compare_distance(Point2, Point2, Point2) const { return mode == random ? coin() : constant(); }
+    Sign compare_distance(Point2, Point2, Point2) const {
+        return mode == random ? coin() : constant();
+    }
     std::string name() const { return "lying"; }
 };
 static_assert(PredicateKernel<LyingKernel>);

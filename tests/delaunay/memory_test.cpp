@@ -88,8 +88,9 @@ std::vector<std::string> mappings_with_flag(const std::string& flag) {
 // Twice: with malloc as it starts (arrays of megabytes get mappings of their own, which
 // free() unmaps, advice and all), and then as a caller's malloc may be (here told to keep
 // blocks up to 32 MB in its heap and freed memory there too, as glibc also decides by
-// itself once a large block has been freed): then the output arrays come from the heap and stay there when freed, and
-// only settle_huge_pages keeps their advice from outliving them (without it this fails).
+// itself once a large block has been freed): then the output arrays come from the heap and stay
+// there when freed, and only settle_huge_pages keeps their advice from outliving them (without it
+// this fails).
 TEST(FreshMemory, TriangulationLeavesNoHugePageAdviceBehind) {
     std::ifstream probe("/proc/self/smaps");
     if (!probe) GTEST_SKIP() << "no /proc/self/smaps here";

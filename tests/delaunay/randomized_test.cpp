@@ -124,16 +124,18 @@ TEST(RandomizedWork, TrianglesCreatedAndLocationStepsMatchTheAnalysis) {
     for (int s = 0; s < 2; ++s) {
         const std::size_t n = sizes[s];
         const auto pts = uniform_points(n, 2025 + s);
-        const Result r = triangulate<Instrumentation::counters>(pts, AdaptiveKernel{}, randomized());
+        const Result r =
+            triangulate<Instrumentation::counters>(pts, AdaptiveKernel{}, randomized());
         ASSERT_TRUE(r.ok()) << r.failure->message;
         const Counters& c = r.counters;
         EXPECT_EQ(c.triangles_created - c.triangles_destroyed, r.triangulation.triangle_count());
         const double created = double(c.triangles_created) / double(n);
         steps_per_point[s] = double(c.location_steps) / double(n);
-        std::printf("  n = %zu: triangles created %.3f n, flips %.3f n, location steps %.2f n, "
-                    "location orientations %.2f n\n",
-                    n, created, double(c.lawson_flips) / double(n), steps_per_point[s],
-                    double(c.location_orientations) / double(n));
+        std::printf(
+            "  n = %zu: triangles created %.3f n, flips %.3f n, location steps %.2f n, "
+            "location orientations %.2f n\n",
+            n, created, double(c.lawson_flips) / double(n), steps_per_point[s],
+            double(c.location_orientations) / double(n));
         EXPECT_LT(created, 9.0);
         EXPECT_GT(created, 3.0);  // at least the split of every interior point
         EXPECT_EQ(c.eroded_edges, 0u);
@@ -154,8 +156,10 @@ RC_GTEST_PROP(RandomizedPolicies, CosineAndDeterminantGiveIdenticalArraysOnExact
     RC_TAG(s.family);
     for (int kernel = 0; kernel < 2; ++kernel) {
         const auto run = [&](InCirclePolicy p) {
-            return kernel == 0 ? triangulate<Instrumentation::theorem1>(s.points, GmpExactKernel{}, randomized(p))
-                               : triangulate<Instrumentation::theorem1>(s.points, AdaptiveKernel{}, randomized(p));
+            return kernel == 0 ? triangulate<Instrumentation::theorem1>(s.points, GmpExactKernel{},
+                                                                        randomized(p))
+                               : triangulate<Instrumentation::theorem1>(s.points, AdaptiveKernel{},
+                                                                        randomized(p));
         };
         const Result det = run(InCirclePolicy::determinant);
         const Result cos = run(InCirclePolicy::cosine);
@@ -170,7 +174,9 @@ RC_GTEST_PROP(RandomizedPolicies, CosineAndDeterminantGiveIdenticalArraysOnExact
     }
 }
 
-TEST(RandomizedPolicies, IdenticalOnUniformPoints) { check_both_policies(uniform_points(3000, 11)); }
+TEST(RandomizedPolicies, IdenticalOnUniformPoints) {
+    check_both_policies(uniform_points(3000, 11));
+}
 
 // --- degenerate fixtures ------------------------------------------------------------------
 
@@ -290,7 +296,6 @@ TEST(RandomizedFixtures, LocationThroughALargeFanStaysCheap) {
 }
 
 // --- kernels that lie --------------------------------------------------------------------
-
 
 // Whatever the kernel answers, a result or a typed failure: algorithms_test.cpp,
 // EveryAlgorithm.LyingKernelGivesAResultOrATypedFailure.

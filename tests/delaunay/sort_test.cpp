@@ -31,8 +31,8 @@ TEST(OrderKey, OrdersDoublesAsNumbersAndIdentifiesSignedZeros) {
     constexpr double big = std::numeric_limits<double>::max();
     constexpr double tiny = std::numeric_limits<double>::denorm_min();
     constexpr double normal = std::numeric_limits<double>::min();
-    const std::vector<double> ascending = {-inf, -big, -1.5, -1.0, -normal, -tiny,
-                                           0.0,  tiny, normal, 1.0, 1.5, big, inf};
+    const std::vector<double> ascending = {-inf, -big,   -1.5, -1.0, -normal, -tiny, 0.0,
+                                           tiny, normal, 1.0,  1.5,  big,     inf};
     for (std::size_t i = 0; i + 1 < ascending.size(); ++i) {
         EXPECT_LT(order_key(ascending[i]), order_key(ascending[i + 1]))
             << ascending[i] << " < " << ascending[i + 1];
@@ -81,9 +81,9 @@ rc::Gen<std::vector<Point2>> gen_input() {
         for (std::size_t j = 0; j < extra; ++j) {
             const Point2 p = pts[*rc::gen::inRange<std::size_t>(0, pts.size())];
             switch (*rc::gen::inRange(0, 4)) {
-                case 0: pts.push_back(p); break;                    // a duplicate
-                case 1: pts.push_back({p.x, -p.y}); break;           // the same x
-                case 2: pts.push_back({-0.0, p.y}); break;           // signed zeros
+                case 0: pts.push_back(p); break;            // a duplicate
+                case 1: pts.push_back({p.x, -p.y}); break;  // the same x
+                case 2: pts.push_back({-0.0, p.y}); break;  // signed zeros
                 default: pts.push_back({0.0, std::copysign(0.0, -p.y)}); break;
             }
         }

@@ -48,8 +48,8 @@ rc::Gen<Options> gen_options() {
 
 std::string describe(const Options& o) {
     return std::string(to_string(o.strategy)) + " strip_points " + std::to_string(o.strip_points) +
-           " strip_tiles " + std::to_string(o.strip_tiles) +
-           " threads " + std::to_string(o.threads) +
+           " strip_tiles " + std::to_string(o.strip_tiles) + " threads " +
+           std::to_string(o.threads) +
            (o.incircle == InCirclePolicy::cosine ? " cosine" : " determinant");
 }
 
@@ -60,7 +60,8 @@ Result check_against_cgal(std::span<const Point2> pts, const K& kernel, const Op
     if (!r.ok()) RC_FAIL(describe(o) + ": " + r.failure->message);
     const Certificate c = certify(pts, r.triangulation);
     if (!c.ok()) RC_FAIL(describe(o) + ": certify: " + c.summary());
-    RC_ASSERT(r.strategy == choose_strategy(pts.size() - r.triangulation.duplicates.size(), o.strategy));
+    RC_ASSERT(r.strategy ==
+              choose_strategy(pts.size() - r.triangulation.duplicates.size(), o.strategy));
     RC_ASSERT(r.counters.theorem1_violations == 0u);
     RC_ASSERT(r.counters.theorem1_checks == r.counters.incircle_tests);
     RC_ASSERT(r.counters.triangles_created - r.counters.triangles_destroyed ==
@@ -254,7 +255,7 @@ TEST(DelaunayMerge, StripsOfOneTwoAndThreePointsArePureDivideAndConquer) {
 // version linked it to the destroyed one.
 TEST(DelaunayMergeRegression, BaseSwingsBackAlongAChainEdge) {
     const std::vector<Point2> pts{
-        {0x1.82a3befaddcbcp-1, 0x1.472f1f73724ap-1}, {0x1.81192cfe1cbcfp-1, 0x1.171621fc50d6ap-3},
+        {0x1.82a3befaddcbcp-1, 0x1.472f1f73724ap-1},  {0x1.81192cfe1cbcfp-1, 0x1.171621fc50d6ap-3},
         {0x1.ce79451c9a6c3p-1, 0x1.814dc629c7f4fp-4}, {0x1.262e1432cba85p-1, 0x1.7dd645e8fadeep-2},
         {0x1.187273d8bae7fp-2, 0x1.8fa32b81059dfp-2}, {0x1.95c23685de9fap-7, 0x1.0c232392c1217p-1}};
     Options o;
@@ -309,7 +310,8 @@ std::vector<Point2> time_zone_cities(const char* path) {
         const std::string d = s.substr(1);
         const double deg = std::stod(d.substr(0, deg_digits));
         const double min = std::stod(d.substr(deg_digits, 2));
-        const double sec = d.size() > std::size_t(deg_digits + 2) ? std::stod(d.substr(deg_digits + 2, 2)) : 0;
+        const double sec =
+            d.size() > std::size_t(deg_digits + 2) ? std::stod(d.substr(deg_digits + 2, 2)) : 0;
         return sign * (deg + min / 60 + sec / 3600);
     };
     for (std::string line; std::getline(in, line);) {
@@ -328,8 +330,8 @@ TEST(DelaunayRealData, TimeZoneCitiesUnderEveryStrategy) {
         const std::vector<Point2> pts = time_zone_cities(path);
         ASSERT_GT(pts.size(), 300u) << path << " (Debian package tzdata)";
         const EdgeSets oracle = test::cgal_edge_sets(pts);
-        for (const Strategy st : {Strategy::lexicographic, Strategy::radial, Strategy::strips,
-                                  Strategy::automatic}) {
+        for (const Strategy st :
+             {Strategy::lexicographic, Strategy::radial, Strategy::strips, Strategy::automatic}) {
             for (const std::size_t sp : {3, 40}) {
                 Options o;
                 o.strategy = st;
@@ -471,9 +473,9 @@ void check_tiles(const std::vector<Point2>& all, std::uint32_t a, std::size_t ti
     std::vector<Point2> to_pts(m);
     std::vector<std::uint32_t> to_ids(m);
     delaunay::detail::TilingScratch scratch;
-    const delaunay::detail::StripTiles t = delaunay::detail::tile_strip(AdaptiveKernel{}, pts, ids, tiles,
-                                                    std::span<Point2>(to_pts),
-                                                    std::span<std::uint32_t>(to_ids), scratch);
+    const delaunay::detail::StripTiles t =
+        delaunay::detail::tile_strip(AdaptiveKernel{}, pts, ids, tiles, std::span<Point2>(to_pts),
+                                     std::span<std::uint32_t>(to_ids), scratch);
     RC_ASSERT(t.cuts.front() == 0u);
     RC_ASSERT(t.cuts.back() == m);
     RC_ASSERT(t.cuts.size() - 1 <= std::max<std::size_t>(tiles, 1));
@@ -490,7 +492,8 @@ void check_tiles(const std::vector<Point2>& all, std::uint32_t a, std::size_t ti
         RC_ASSERT(hi >= lo + 3);
         bool off_line = false;
         for (std::uint32_t j = lo + 2; j < hi; ++j) {
-            off_line = off_line || AdaptiveKernel{}.orient2d(to_pts[lo], to_pts[lo + 1], to_pts[j]) != Sign::zero;
+            off_line = off_line || AdaptiveKernel{}.orient2d(to_pts[lo], to_pts[lo + 1],
+                                                             to_pts[j]) != Sign::zero;
         }
         RC_ASSERT(off_line);
         for (std::uint32_t j = lo + 1; j < hi; ++j) RC_ASSERT(lex_less(to_pts[j - 1], to_pts[j]));
@@ -500,7 +503,8 @@ void check_tiles(const std::vector<Point2>& all, std::uint32_t a, std::size_t ti
             RC_ASSERT(!lex_less(to_pts[j], to_pts[t.first]));
             RC_ASSERT(!lex_less(to_pts[t.last], to_pts[j]));
             if (k + 1 < t.cuts.size() - 1) {
-                for (std::uint32_t i = hi; i < t.cuts[k + 2]; ++i) RC_ASSERT(to_pts[j].y < to_pts[i].y);
+                for (std::uint32_t i = hi; i < t.cuts[k + 2]; ++i)
+                    RC_ASSERT(to_pts[j].y < to_pts[i].y);
             }
         }
     }
@@ -512,7 +516,8 @@ RC_GTEST_PROP(DelaunayTiles, TileStripCutsSeparatedSortedNonCollinearTiles, ()) 
     auto pts = *test::gen_family_points(family, *rc::gen::inRange<std::size_t>(3, 400));
     std::sort(pts.begin(), pts.end(), lex_less);
     pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
-    const auto a = *rc::gen::inRange<std::uint32_t>(0, static_cast<std::uint32_t>(pts.size() / 3 + 1));
+    const auto a =
+        *rc::gen::inRange<std::uint32_t>(0, static_cast<std::uint32_t>(pts.size() / 3 + 1));
     RC_PRE(pts.size() >= a + 3);
     bool off_line = false;
     for (std::size_t j = a + 2; j < pts.size(); ++j) {
@@ -552,12 +557,13 @@ TEST(DelaunayTiles, TileStripOnRowsTinyAndHugeRanges) {
     delaunay::detail::TilingScratch scratch;
     std::vector<Point2> to(huge.size());
     std::vector<std::uint32_t> ids(huge.size()), to_ids(huge.size());
-    EXPECT_EQ(delaunay::detail::tile_strip(AdaptiveKernel{}, tiny, std::span(ids).first(6), 2,
-                                 std::span(to).first(6), std::span(to_ids).first(6), scratch)
-                  .cuts.size(),
-              2u);
+    EXPECT_EQ(
+        delaunay::detail::tile_strip(AdaptiveKernel{}, tiny, std::span(ids).first(6), 2,
+                                     std::span(to).first(6), std::span(to_ids).first(6), scratch)
+            .cuts.size(),
+        2u);
     EXPECT_GT(delaunay::detail::tile_strip(AdaptiveKernel{}, huge, ids, 4, std::span<Point2>(to),
-                                 std::span<std::uint32_t>(to_ids), scratch)
+                                           std::span<std::uint32_t>(to_ids), scratch)
                   .cuts.size(),
               2u);
 }

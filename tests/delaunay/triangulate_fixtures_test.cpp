@@ -43,15 +43,16 @@ TEST(DelaunayInput, NonFiniteCoordinateIsRejectedNamingTheFirstBadIndex) {
 }
 
 TEST(DelaunayInput, EmptyOneAndTwoPointsHaveNoTriangles) {
-    for (const std::vector<Point2>& pts :
-         {std::vector<Point2>{}, std::vector<Point2>{{3, 4}}, std::vector<Point2>{{3, 4}, {-1, 2}}}) {
+    for (const std::vector<Point2>& pts : {std::vector<Point2>{}, std::vector<Point2>{{3, 4}},
+                                           std::vector<Point2>{{3, 4}, {-1, 2}}}) {
         const Result r = run_certified(pts);
         EXPECT_TRUE(r.triangulation.collinear);
         EXPECT_TRUE(r.triangulation.triangles.empty());
         EXPECT_EQ(r.triangulation.hull.size(), pts.size());
     }
     // The chain of two points is in lexicographic order.
-    EXPECT_EQ(run_certified({{3, 4}, {-1, 2}}).triangulation.hull, (std::vector<std::uint32_t>{1, 0}));
+    EXPECT_EQ(run_certified({{3, 4}, {-1, 2}}).triangulation.hull,
+              (std::vector<std::uint32_t>{1, 0}));
 }
 
 TEST(DelaunayInput, DuplicatesMapToTheFirstOccurrence) {
@@ -102,7 +103,7 @@ TEST(DelaunayTangents, PointCollinearWithAHullEdgeConnectsToTheNearerEndpoint) {
 // Cocircular input: points on the circle keep their edge, so the answer is a valid
 // triangulation and the same on every run and under both policies.
 TEST(DelaunayCocircular, RegularOctagonOnALatticeCircleIsDeterministic) {
-    const std::vector<Point2> pts{{5, 0}, {4, 3}, {3, 4}, {0, 5}, {-3, 4}, {-4, 3},
+    const std::vector<Point2> pts{{5, 0},  {4, 3},   {3, 4},   {0, 5},  {-3, 4}, {-4, 3},
                                   {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}};
     const Result det = run_certified(pts, InCirclePolicy::determinant);
     const Result cos = run_certified(pts, InCirclePolicy::cosine);
@@ -121,8 +122,8 @@ TEST(DelaunayCocircular, IntegerGridSquares) {
     EXPECT_EQ(r.triangulation.hull.size(), 2u * (6 + 4));
 }
 
-// docs/background.md section 5: inserting the left branch of a parabola in ascending x rebuilds the whole
-// triangulation every time, (n-2)(n-3)/2 destroyed triangles in total.
+// docs/background.md section 5: inserting the left branch of a parabola in ascending x rebuilds the
+// whole triangulation every time, (n-2)(n-3)/2 destroyed triangles in total.
 TEST(DelaunayCounts, AscendingParabolaLeftBranchDestroysQuadraticallyMany) {
     const int n = 60;
     std::vector<Point2> pts;
@@ -170,7 +171,7 @@ TEST(DelaunayDoubleKernelRegression, KettnerTwoUlpsAboveReportsNoVisibleEdge) {
     const Result r = triangulate(pts, DoubleKernel{}, paper);
     ASSERT_FALSE(r.ok());
     EXPECT_EQ(r.failure->kind, FailureKind::no_visible_edge);
-    EXPECT_EQ(r.failure->insertion, 3u);    // the fourth point in sorted order, (12, 12)
+    EXPECT_EQ(r.failure->insertion, 3u);  // the fourth point in sorted order, (12, 12)
     EXPECT_EQ(r.failure->input_index, 1u);
 }
 

@@ -151,9 +151,15 @@ void check_metamorphic(const AlgorithmInfo& algorithm) {
         return std::optional<std::vector<Point2>>{out};
     };
     // Mirror x, swap the axes: always exact.
-    RC_ASSERT(forced_edges(*transformed([](Point2 p, Point2& q) { q = {-p.x, p.y}; return true; }),
+    RC_ASSERT(forced_edges(*transformed([](Point2 p, Point2& q) {
+                  q = {-p.x, p.y};
+                  return true;
+              }),
                            same_names) == base);
-    RC_ASSERT(forced_edges(*transformed([](Point2 p, Point2& q) { q = {p.y, p.x}; return true; }),
+    RC_ASSERT(forced_edges(*transformed([](Point2 p, Point2& q) {
+                  q = {p.y, p.x};
+                  return true;
+              }),
                            same_names) == base);
     // Scale by 2^k and translate: only when every coordinate stays exact.
     const int k = *rc::gen::inRange(-80, 81);
@@ -163,10 +169,10 @@ void check_metamorphic(const AlgorithmInfo& algorithm) {
         RC_TAG("scaled exactly");
         RC_ASSERT(forced_edges(*scaled, same_names) == base);
     }
-    const double tx = std::ldexp(static_cast<double>(*rc::gen::inRange(-1000, 1001)),
-                                 *rc::gen::inRange(-30, 31));
-    const double ty = std::ldexp(static_cast<double>(*rc::gen::inRange(-1000, 1001)),
-                                 *rc::gen::inRange(-30, 31));
+    const double tx =
+        std::ldexp(static_cast<double>(*rc::gen::inRange(-1000, 1001)), *rc::gen::inRange(-30, 31));
+    const double ty =
+        std::ldexp(static_cast<double>(*rc::gen::inRange(-1000, 1001)), *rc::gen::inRange(-30, 31));
     if (auto moved = transformed([tx, ty](Point2 p, Point2& q) {
             return exact_sum(p.x, tx, q.x) && exact_sum(p.y, ty, q.y);
         })) {

@@ -44,14 +44,16 @@ Q squared_distance(const ExactPoint& c, Point2 p) {
 }
 
 int exact_orientation(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c) {
-    const Q d = (b.first - a.first) * (c.second - a.second) - (b.second - a.second) * (c.first - a.first);
+    const Q d =
+        (b.first - a.first) * (c.second - a.second) - (b.second - a.second) * (c.first - a.first);
     return CGAL::sign(d);
 }
 
 ExactPoint exact(Point2 p) { return {Q(p.x), Q(p.y)}; }
 
 /// Checks one diagram of `points` (triangulated by `t`) with RC_ASSERT.
-void check_diagram(std::span<const Point2> points, const Triangulation& t, const VoronoiDiagram& d) {
+void check_diagram(std::span<const Point2> points, const Triangulation& t,
+                   const VoronoiDiagram& d) {
     const std::size_t n = points.size();
     RC_ASSERT(d.site_count() == n);
     RC_ASSERT(d.unbounded.size() == n);
@@ -65,8 +67,9 @@ void check_diagram(std::span<const Point2> points, const Triangulation& t, const
     std::map<ExactPoint, std::size_t> distinct;
     std::vector<ExactPoint> centre_of_vertex(d.vertex_count());
     for (std::size_t tr = 0; tr < t.triangle_count(); ++tr) {
-        const auto c = exact_circumcenter(points[t.triangles[3 * tr]], points[t.triangles[3 * tr + 1]],
-                                          points[t.triangles[3 * tr + 2]]);
+        const auto c =
+            exact_circumcenter(points[t.triangles[3 * tr]], points[t.triangles[3 * tr + 1]],
+                               points[t.triangles[3 * tr + 2]]);
         RC_ASSERT(c.has_value());
         const std::uint32_t v = d.vertex_of_triangle[tr];
         RC_ASSERT(v < d.vertex_count());
@@ -87,7 +90,8 @@ void check_diagram(std::span<const Point2> points, const Triangulation& t, const
         for (const Point2& p : points) best = std::min(best, squared_distance(c, p));
         std::set<std::uint32_t> nearest;
         for (std::size_t i = 0; i < n; ++i)
-            if (squared_distance(c, points[i]) == best) nearest.insert(static_cast<std::uint32_t>(i));
+            if (squared_distance(c, points[i]) == best)
+                nearest.insert(static_cast<std::uint32_t>(i));
         const auto sites = d.vertex_sites(v);
         RC_ASSERT(std::set<std::uint32_t>(sites.begin(), sites.end()) == nearest);
         RC_ASSERT(nearest.size() == sites.size());
@@ -98,10 +102,13 @@ void check_diagram(std::span<const Point2> points, const Triangulation& t, const
             if (t.vertex_of_input[s] == s) ring.push_back(exact(points[s]));
         RC_ASSERT(ring.size() >= 3u);
         for (std::size_t k = 0; k < ring.size(); ++k) {
-            RC_ASSERT(exact_orientation(ring[k], ring[(k + 1) % ring.size()], ring[(k + 2) % ring.size()]) > 0);
-            if (k >= 1 && k + 1 < ring.size()) RC_ASSERT(exact_orientation(ring[0], ring[k], ring[k + 1]) > 0);
+            RC_ASSERT(exact_orientation(ring[k], ring[(k + 1) % ring.size()],
+                                        ring[(k + 2) % ring.size()]) > 0);
+            if (k >= 1 && k + 1 < ring.size())
+                RC_ASSERT(exact_orientation(ring[0], ring[k], ring[k + 1]) > 0);
         }
-        for (const std::uint32_t s : sites) vertices_of_site[s].insert(static_cast<std::uint32_t>(v));
+        for (const std::uint32_t s : sites)
+            vertices_of_site[s].insert(static_cast<std::uint32_t>(v));
     }
 
     // Cells: exactly the vertices of the site, counter-clockwise around it; unbounded
@@ -132,17 +139,20 @@ void check_diagram(std::span<const Point2> points, const Triangulation& t, const
 }
 
 using DT = CGAL::Delaunay_triangulation_2<Epick>;
-using VD = CGAL::Voronoi_diagram_2<DT, CGAL::Delaunay_triangulation_adaptation_traits_2<DT>,
-                                   CGAL::Delaunay_triangulation_caching_degeneracy_removal_policy_2<DT>>;
+using VD =
+    CGAL::Voronoi_diagram_2<DT, CGAL::Delaunay_triangulation_adaptation_traits_2<DT>,
+                            CGAL::Delaunay_triangulation_caching_degeneracy_removal_policy_2<DT>>;
 
 /// CGAL's Voronoi vertices as sets of (first-occurrence) sites, and its unbounded sites.
-void check_against_cgal(std::span<const Point2> points, const Triangulation& t, const VoronoiDiagram& d) {
+void check_against_cgal(std::span<const Point2> points, const Triangulation& t,
+                        const VoronoiDiagram& d) {
     DT dt;
     for (const Point2& p : points) dt.insert(to_cgal(p));
     if (dt.dimension() < 2) return;
     VD vd(dt);
     std::map<std::pair<double, double>, std::uint32_t> index;
-    for (std::size_t i = 0; i < points.size(); ++i) index.emplace(std::pair{points[i].x, points[i].y}, i);
+    for (std::size_t i = 0; i < points.size(); ++i)
+        index.emplace(std::pair{points[i].x, points[i].y}, i);
     const auto site_of = [&](VD::Face_handle f) {
         const auto p = f->dual()->point();
         return index.at({p.x(), p.y()});
@@ -239,7 +249,8 @@ TEST(Voronoi, OneVertexPerLatticeCircle) {
 TEST(Voronoi, TinyAndCollinearInputs) {
     for (const std::vector<Point2>& points :
          {std::vector<Point2>{}, std::vector<Point2>{{1, 2}}, std::vector<Point2>{{0, 0}, {1, 1}},
-          std::vector<Point2>{{0, 0}, {1, 1}, {2, 2}, {1, 1}}, std::vector<Point2>{{3, 3}, {3, 3}}}) {
+          std::vector<Point2>{{0, 0}, {1, 1}, {2, 2}, {1, 1}},
+          std::vector<Point2>{{3, 3}, {3, 3}}}) {
         const auto r = delaunay::triangulate(points, AdaptiveKernel{});
         ASSERT_TRUE(r.ok());
         const VoronoiDiagram d = delaunay::voronoi(points, r.triangulation, AdaptiveKernel{});
@@ -258,7 +269,8 @@ TEST(Voronoi, DuplicatesShareTheirTwinsCell) {
     const VoronoiDiagram d = delaunay::voronoi(points, r.triangulation, GmpExactKernel{});
     const auto same = [&](std::size_t i, std::size_t j) {
         const auto a = d.cell(i), b = d.cell(j);
-        return std::vector<std::uint32_t>(a.begin(), a.end()) == std::vector<std::uint32_t>(b.begin(), b.end()) &&
+        return std::vector<std::uint32_t>(a.begin(), a.end()) ==
+                   std::vector<std::uint32_t>(b.begin(), b.end()) &&
                d.unbounded[i] == d.unbounded[j];
     };
     EXPECT_TRUE(same(5, 1));
@@ -280,7 +292,8 @@ TEST(Voronoi, CentreBeyondTheLargestDoubleIsAnError) {
     const std::vector<Point2> points = {{-huge, 0}, {huge, 0}, {0, 1}};
     const auto r = delaunay::triangulate(points, AdaptiveKernel{});
     ASSERT_TRUE(r.ok());
-    EXPECT_THROW(delaunay::voronoi(points, r.triangulation, AdaptiveKernel{}), delaunay::VoronoiError);
+    EXPECT_THROW(delaunay::voronoi(points, r.triangulation, AdaptiveKernel{}),
+                 delaunay::VoronoiError);
 }
 
 TEST(Voronoi, InexactKernelStillGivesCorrectlyRoundedVertices) {
@@ -322,38 +335,44 @@ void check_clipped(std::span<const Point2> points, const Triangulation& t, const
         const auto cell = c.cell(i);
         for (const std::uint32_t v : cell) {
             const auto sites = c.vertex_sites(v);
-            RC_ASSERT(std::find(sites.begin(), sites.end(), static_cast<std::uint32_t>(i)) != sites.end());
+            RC_ASSERT(std::find(sites.begin(), sites.end(), static_cast<std::uint32_t>(i)) !=
+                      sites.end());
         }
         // A bounded cell strictly inside the box is kept as it is.
         const auto whole = d.cell(i);
-        const bool strictly_inside = !d.collinear && d.unbounded[i] == 0 &&
+        const bool strictly_inside =
+            !d.collinear && d.unbounded[i] == 0 &&
             std::all_of(whole.begin(), whole.end(), [&](std::uint32_t v) {
                 const Point2 p = d.vertices[v];
                 return box.xmin < p.x && p.x < box.xmax && box.ymin < p.y && p.y < box.ymax;
             });
         if (strictly_inside) {
             RC_ASSERT(cell.size() == whole.size());
-            for (std::size_t k = 0; k < cell.size(); ++k) RC_ASSERT(c.vertices[cell[k]] == d.vertices[whole[k]]);
+            for (std::size_t k = 0; k < cell.size(); ++k)
+                RC_ASSERT(c.vertices[cell[k]] == d.vertices[whole[k]]);
         }
         if (t.vertex_of_input[i] != i) continue;  // a duplicate's cell is its twin's
         for (std::size_t k = 0; k < cell.size(); ++k) {
             // Relative to the box's corner, so the shoelace does not cancel.
             const Point2 a = c.vertices[cell[k]], b = c.vertices[cell[(k + 1) % cell.size()]];
-            const long double ax = static_cast<long double>(a.x) - box.xmin, ay = static_cast<long double>(a.y) - box.ymin;
-            const long double bx = static_cast<long double>(b.x) - box.xmin, by = static_cast<long double>(b.y) - box.ymin;
+            const long double ax = static_cast<long double>(a.x) - box.xmin,
+                              ay = static_cast<long double>(a.y) - box.ymin;
+            const long double bx = static_cast<long double>(b.x) - box.xmin,
+                              by = static_cast<long double>(b.y) - box.ymin;
             area += ax * by - bx * ay;
         }
     }
     // The cells tile the box (up to the rounding of the corners).
     if (n > 0) {
         const long double box_area = 2.0L * (box.xmax - box.xmin) * (box.ymax - box.ymin);
-        RC_ASSERT(std::fabs(static_cast<double>(area - box_area)) <= 1e-9 * static_cast<double>(box_area));
+        RC_ASSERT(std::fabs(static_cast<double>(area - box_area)) <=
+                  1e-9 * static_cast<double>(box_area));
     }
 }
 
 TEST(Voronoi, ClippedCellsTileTheBox) {
-    for (const std::string family : {"uniform", "integer_grid", "lattice_circle", "gaussian", "duplicates",
-                                     "dyadic_line", "near_integer_grid"}) {
+    for (const std::string family : {"uniform", "integer_grid", "lattice_circle", "gaussian",
+                                     "duplicates", "dyadic_line", "near_integer_grid"}) {
         const bool ok = rc::check("clip on " + family, [&] {
             const std::size_t n = *rc::gen::inRange<std::size_t>(0, 40);
             const std::vector<Point2> points = *gen_family_points(family, n);
@@ -377,7 +396,8 @@ TEST(Voronoi, ClippedCellsTileTheBox) {
             }
             const double shrink = *rc::gen::element(0.0, 0.1, 0.3, -0.2);
             const double w = std::max(x1 - x0, 1.0), h = std::max(y1 - y0, 1.0);
-            const delaunay::Box box{x0 + shrink * w, y0 + shrink * h, x1 - shrink * w, y1 - shrink * h};
+            const delaunay::Box box{x0 + shrink * w, y0 + shrink * h, x1 - shrink * w,
+                                    y1 - shrink * h};
             RC_PRE(box.xmin < box.xmax && box.ymin < box.ymax);
             const delaunay::ClippedVoronoi c = delaunay::clip(d, points, r.triangulation, box);
             check_clipped(points, r.triangulation, d, c, box);
@@ -429,16 +449,22 @@ TEST(Voronoi, ClipRejectsABoxWithoutInterior) {
 // exact stage. Now every vertex must match the oracle.
 TEST(VoronoiRegression, CentreJustAboveTheSubnormalRange) {
     const double a = 0x1p-1020, tiny = 0x0.0000000000001p-1022;
-    const std::vector<Point2> points = {
-        {a, 0}, {a, 0}, {a, 0}, {a, 0}, {a, 0}, {a, 0}, {a, 0}, {a, 0}, {a, 0}, {a, tiny},
-        {a, 0}, {a, 0}, {a, 0}, {0x1.ffffffp-1021, -0x0.000006p-1022}, {a, 0},
-        {0x1.fffffffffffffp-1021, 0}, {a, 0}, {a, 0}};
+    const std::vector<Point2> points = {{a, 0}, {a, 0},
+                                        {a, 0}, {a, 0},
+                                        {a, 0}, {a, 0},
+                                        {a, 0}, {a, 0},
+                                        {a, 0}, {a, tiny},
+                                        {a, 0}, {a, 0},
+                                        {a, 0}, {0x1.ffffffp-1021, -0x0.000006p-1022},
+                                        {a, 0}, {0x1.fffffffffffffp-1021, 0},
+                                        {a, 0}, {a, 0}};
     for (const bool exact_kernel : {false, true}) {
         const auto r = exact_kernel ? delaunay::triangulate(points, GmpExactKernel{})
                                     : delaunay::triangulate(points, AdaptiveKernel{});
         ASSERT_TRUE(r.ok());
         const VoronoiDiagram d = delaunay::voronoi(points, r.triangulation, AdaptiveKernel{});
-        const bool ok = rc::check("the regression's diagram", [&] { check_diagram(points, r.triangulation, d); });
+        const bool ok = rc::check("the regression's diagram",
+                                  [&] { check_diagram(points, r.triangulation, d); });
         EXPECT_TRUE(ok);
     }
 }

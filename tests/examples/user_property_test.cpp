@@ -20,8 +20,7 @@ namespace xt = exidel::testing;
 bool in_closed_triangle(Point2 a, Point2 b, Point2 c, Point2 p) {
     using K = exidel::AdaptiveKernel;
     const Sign s = K::orient2d(a, b, c);
-    return K::orient2d(a, b, p) != -s && K::orient2d(b, c, p) != -s &&
-           K::orient2d(c, a, p) != -s;
+    return K::orient2d(a, b, p) != -s && K::orient2d(b, c, p) != -s && K::orient2d(c, a, p) != -s;
 }
 
 RC_GTEST_PROP(MyGeometry, PointOnAnEdgeIsInside, ()) {

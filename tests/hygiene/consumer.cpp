@@ -33,7 +33,8 @@ int check_adaptive(const std::vector<QueryFamily>& families) {
     for (const QueryFamily& family : families) {
         // The exact answers, computed in the default environment whatever this process
         // started with; the adaptive kernel then runs in the process's own environment.
-        const Signs exact = in_default_environment([&] { return evaluate(GmpExactKernel{}, family); });
+        const Signs exact =
+            in_default_environment([&] { return evaluate(GmpExactKernel{}, family); });
         const Signs adaptive = evaluate(AdaptiveKernel{}, family);
         const Signs plain = evaluate(DoubleKernel{}, family);
         const std::size_t bad = count_mismatches("adaptive", family, adaptive, exact) +
@@ -44,13 +45,16 @@ int check_adaptive(const std::vector<QueryFamily>& families) {
         // The plain kernel is expected to be wrong here: the count is information, and
         // shows that the queries are hard. It is not printed query by query.
         std::size_t plain_wrong = 0;
-        for (std::size_t i = 0; i < exact.orient2d.size(); ++i) plain_wrong += plain.orient2d[i] != exact.orient2d[i];
+        for (std::size_t i = 0; i < exact.orient2d.size(); ++i)
+            plain_wrong += plain.orient2d[i] != exact.orient2d[i];
         for (std::size_t i = 0; i < exact.incircle.size(); ++i) {
             plain_wrong += plain.incircle[i] != exact.incircle[i];
             plain_wrong += plain.incircle_cosine[i] != exact.incircle_cosine[i];
         }
-        for (std::size_t i = 0; i < exact.orient3d.size(); ++i) plain_wrong += plain.orient3d[i] != exact.orient3d[i];
-        for (std::size_t i = 0; i < exact.insphere.size(); ++i) plain_wrong += plain.insphere[i] != exact.insphere[i];
+        for (std::size_t i = 0; i < exact.orient3d.size(); ++i)
+            plain_wrong += plain.orient3d[i] != exact.orient3d[i];
+        for (std::size_t i = 0; i < exact.insphere.size(); ++i)
+            plain_wrong += plain.insphere[i] != exact.insphere[i];
         std::printf("%-10s %7zu queries: adaptive and batch wrong %zu, double wrong %zu\n",
                     family.name.c_str(), queries, bad, plain_wrong);
     }
@@ -68,8 +72,8 @@ int print_double_signs(const std::vector<QueryFamily>& families) {
         const Signs ld = evaluate(LongDoubleKernel{}, family);
         for (const auto& [name, s] : {std::pair{"double", &d}, std::pair{"long-double", &ld}}) {
             std::printf("%s %s", family.name.c_str(), name);
-            for (const std::vector<Sign>* signs : {&s->orient2d, &s->incircle, &s->incircle_cosine,
-                                                   &s->orient3d, &s->insphere}) {
+            for (const std::vector<Sign>* signs :
+                 {&s->orient2d, &s->incircle, &s->incircle_cosine, &s->orient3d, &s->insphere}) {
                 std::printf(" %016llx", static_cast<unsigned long long>(fingerprint(*signs)));
             }
             std::printf("\n");

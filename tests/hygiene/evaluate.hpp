@@ -23,14 +23,16 @@ template <class Kernel>
 Signs evaluate(const Kernel& kernel, const QueryFamily& family) {
     Signs s;
     s.orient2d.reserve(family.orient2d.size());
-    for (const Orient2dQuery& q : family.orient2d) s.orient2d.push_back(kernel.orient2d(q.a, q.b, q.c));
+    for (const Orient2dQuery& q : family.orient2d)
+        s.orient2d.push_back(kernel.orient2d(q.a, q.b, q.c));
     s.incircle.reserve(family.incircle.size());
     s.incircle_cosine.reserve(family.incircle.size());
     for (const IncircleQuery& q : family.incircle) {
         s.incircle.push_back(kernel.incircle(q.a, q.b, q.c, q.d));
         s.incircle_cosine.push_back(kernel.incircle_cosine(q.a, q.b, q.c, q.d));
     }
-    for (const Orient3dQuery& q : family.orient3d) s.orient3d.push_back(kernel.orient3d(q.a, q.b, q.c, q.d));
+    for (const Orient3dQuery& q : family.orient3d)
+        s.orient3d.push_back(kernel.orient3d(q.a, q.b, q.c, q.d));
     for (const InsphereQuery& q : family.insphere) {
         s.insphere.push_back(kernel.insphere(q.a, q.b, q.c, q.d, q.e));
     }
@@ -40,7 +42,8 @@ Signs evaluate(const Kernel& kernel, const QueryFamily& family) {
 /// The batched predicates (batch.hpp) over the same queries.
 inline Signs evaluate_batch(const QueryFamily& family) {
     std::vector<Point2> a, b, c, d;
-    for (const Orient2dQuery& q : family.orient2d) a.push_back(q.a), b.push_back(q.b), c.push_back(q.c);
+    for (const Orient2dQuery& q : family.orient2d)
+        a.push_back(q.a), b.push_back(q.b), c.push_back(q.c);
     Signs s;
     s.orient2d.resize(a.size());
     batch::orient2d(a, b, c, s.orient2d);
@@ -60,8 +63,8 @@ inline void print_point(Point3 p) { std::printf("(%a, %a, %a)", p.x, p.y, p.z); 
 
 /// Counts the queries where `got` differs from `want`, printing the first few with their
 /// exact coordinates (hex floats) so that a failure can become a named regression test.
-inline std::size_t count_mismatches(const char* label, const QueryFamily& family,
-                                    const Signs& got, const Signs& want) {
+inline std::size_t count_mismatches(const char* label, const QueryFamily& family, const Signs& got,
+                                    const Signs& want) {
     std::size_t bad = 0;
     auto report = [&](const char* predicate, std::size_t i, Sign g, Sign w, auto print_query) {
         if (g == w) return;
@@ -74,9 +77,8 @@ inline std::size_t count_mismatches(const char* label, const QueryFamily& family
     };
     for (std::size_t i = 0; i < family.orient2d.size(); ++i) {
         const Orient2dQuery& q = family.orient2d[i];
-        report("orient2d", i, got.orient2d[i], want.orient2d[i], [&] {
-            print_point(q.a), print_point(q.b), print_point(q.c);
-        });
+        report("orient2d", i, got.orient2d[i], want.orient2d[i],
+               [&] { print_point(q.a), print_point(q.b), print_point(q.c); });
     }
     for (std::size_t i = 0; i < family.incircle.size(); ++i) {
         const IncircleQuery& q = family.incircle[i];
@@ -84,20 +86,19 @@ inline std::size_t count_mismatches(const char* label, const QueryFamily& family
             print_point(q.a), print_point(q.b), print_point(q.c), print_point(q.d);
         };
         report("incircle", i, got.incircle[i], want.incircle[i], print_query);
-        report("incircle_cosine", i, got.incircle_cosine[i], want.incircle_cosine[i],
-               print_query);
+        report("incircle_cosine", i, got.incircle_cosine[i], want.incircle_cosine[i], print_query);
     }
     // The 3D signs, unless `got` has none (the batched predicates are planar only).
     for (std::size_t i = 0; i < got.orient3d.size(); ++i) {
         const Orient3dQuery& q = family.orient3d[i];
-        report("orient3d", i, got.orient3d[i], want.orient3d[i], [&] {
-            print_point(q.a), print_point(q.b), print_point(q.c), print_point(q.d);
-        });
+        report("orient3d", i, got.orient3d[i], want.orient3d[i],
+               [&] { print_point(q.a), print_point(q.b), print_point(q.c), print_point(q.d); });
     }
     for (std::size_t i = 0; i < got.insphere.size(); ++i) {
         const InsphereQuery& q = family.insphere[i];
         report("insphere", i, got.insphere[i], want.insphere[i], [&] {
-            print_point(q.a), print_point(q.b), print_point(q.c), print_point(q.d), print_point(q.e);
+            print_point(q.a), print_point(q.b), print_point(q.c), print_point(q.d),
+                print_point(q.e);
         });
     }
     return bad;

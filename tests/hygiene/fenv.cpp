@@ -31,8 +31,9 @@ std::size_t check(const Kernel& kernel, const Environment& env, const QueryFamil
     const std::string label = kernel.name() + " in " + env.name;
     std::size_t bad = count_mismatches(label.c_str(), family, got, exact);
     if (!(before == after)) {
-        std::printf("  %s: environment changed by the kernel (rounding %d -> %d, mxcsr %#x -> %#x)\n",
-                    label.c_str(), before.rounding, after.rounding, before.mxcsr, after.mxcsr);
+        std::printf(
+            "  %s: environment changed by the kernel (rounding %d -> %d, mxcsr %#x -> %#x)\n",
+            label.c_str(), before.rounding, after.rounding, before.mxcsr, after.mxcsr);
         ++bad;
     }
     return bad;
@@ -58,7 +59,9 @@ const Fixture fixtures[] = {
       {0x0.000000000003fp-1022, 0x0.000000000001p-1022},
       {0x0.000000000003cp-1022, 0x0.000000000001fp-1022}},
      Sign::positive,
-     {{0x1.04p-94, 0x0p+0}, {0x1.38p-95, 0x1.ap-95}, {-0x1.ap-95, 0x1.38p-95},
+     {{0x1.04p-94, 0x0p+0},
+      {0x1.38p-95, 0x1.ap-95},
+      {-0x1.ap-95, 0x1.38p-95},
       {-0x0.0000000000001p-1022, -0x1.04p-94}},
      Sign::negative},
     {"daz_subnormal_step_off_huge_circle",
@@ -66,7 +69,9 @@ const Fixture fixtures[] = {
       {0x0.000000000003fp-1022, 0x0.000000000001p-1022},
       {0x0.000000000003dp-1022, 0x0.0000000000021p-1022}},
      Sign::negative,
-     {{0x1.04p+956, 0x0p+0}, {0x1.38p+955, 0x1.ap+955}, {-0x1.ap+955, 0x1.38p+955},
+     {{0x1.04p+956, 0x0p+0},
+      {0x1.38p+955, 0x1.ap+955},
+      {-0x1.ap+955, 0x1.38p+955},
       {-0x0.0000000000001p-1022, -0x1.04p+956}},
      Sign::negative},
 };
@@ -100,8 +105,8 @@ int run(const Kernel& kernel) {
         const Signs exact = evaluate(GmpExactKernel{}, family);
         for (const Environment& env : environments) {
             const std::size_t bad = check(kernel, env, family, exact);
-            std::printf("%-10s %-10s %-20s wrong %zu\n", kernel.name().c_str(),
-                        family.name.c_str(), env.name, bad);
+            std::printf("%-10s %-10s %-20s wrong %zu\n", kernel.name().c_str(), family.name.c_str(),
+                        env.name, bad);
             total_bad += bad;
         }
     }

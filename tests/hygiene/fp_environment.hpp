@@ -46,9 +46,7 @@ struct FpControls {
     friend bool operator==(const FpControls&, const FpControls&) = default;
 };
 
-inline FpControls current_controls() {
-    return {std::fegetround(), read_mxcsr() & mxcsr_controls};
-}
+inline FpControls current_controls() { return {std::fegetround(), read_mxcsr() & mxcsr_controls}; }
 
 /// Sets a rounding mode and, on x86, the FTZ/DAZ bits given in `ftz_daz` (others cleared).
 inline void set_controls(int rounding, unsigned ftz_daz) {

@@ -26,8 +26,18 @@ double ulps(double x, int steps) {
 // a zero coordinate: an ulp step away from 0 is the smallest subnormal, and the families
 // that claim to stay in the normal range must not meet subnormals by accident.
 constexpr std::array<Point2, 12> circle65 = {{
-    {63, 16}, {56, 33}, {39, 52}, {16, 63}, {-25, 60}, {-52, 39},
-    {-63, -16}, {-60, -25}, {-33, -56}, {16, -63}, {33, -56}, {60, -25},
+    {63, 16},
+    {56, 33},
+    {39, 52},
+    {16, 63},
+    {-25, 60},
+    {-52, 39},
+    {-63, -16},
+    {-60, -25},
+    {-33, -56},
+    {16, -63},
+    {33, -56},
+    {60, -25},
 }};
 
 struct Placement {
@@ -98,9 +108,8 @@ void add_cospherical(QueryFamily& family, const Placement& where, int ulp_radius
                              sphere[(i + 3 * n / 5) % n], sphere[(i + 4 * n / 5) % n]};
         const Point3 a = place(p[0], where), b = place(p[1], where), c = place(p[2], where),
                      d = place(p[3], where), e0 = place(p[4], where);
-        const Point3 d0 = place({p[1].x + p[2].x - p[0].x, p[1].y + p[2].y - p[0].y,
-                                 p[1].z + p[2].z - p[0].z},
-                                where);
+        const Point3 d0 = place(
+            {p[1].x + p[2].x - p[0].x, p[1].y + p[2].y - p[0].y, p[1].z + p[2].z - p[0].z}, where);
         for (int dx = -ulp_radius; dx <= ulp_radius; ++dx) {
             for (int dz = -ulp_radius; dz <= ulp_radius; ++dz) {
                 family.insphere.push_back({a, b, c, d, {ulps(e0.x, dx), e0.y, ulps(e0.z, dz)}});
@@ -136,8 +145,8 @@ QueryFamily kettner_family(int grid_size) {
     add_collinear_grid(family, {0.50000000000002531, 0.5000000000000171},
                        {17.300000000000001, 17.300000000000001},
                        {24.00000000000005, 24.0000000000000517765}, grid_size, stride);
-    add_collinear_grid(family, {0.5, 0.5}, {8.8000000000000007, 8.8000000000000007},
-                       {12.1, 12.1}, grid_size, stride);
+    add_collinear_grid(family, {0.5, 0.5}, {8.8000000000000007, 8.8000000000000007}, {12.1, 12.1},
+                       grid_size, stride);
     return family;
 }
 
@@ -146,8 +155,8 @@ QueryFamily cocircular_family(int ulp_radius) {
     // Exponents keep every product of the degree-8 cosine form well inside the normal
     // range (65 * 2^100 to the 8th is about 2^850).
     for (int exponent : {-100, 0, 100}) {
-        for (Point2 offset : {Point2{0, 0}, Point2{1000, -3000}, Point2{0.1, 0.3},
-                              Point2{1e6 + 0.7, 3e5 + 0.1}}) {
+        for (Point2 offset :
+             {Point2{0, 0}, Point2{1000, -3000}, Point2{0.1, 0.3}, Point2{1e6 + 0.7, 3e5 + 0.1}}) {
             add_cocircular(family, {exponent, offset}, ulp_radius);
             add_cospherical(family, {exponent, offset}, ulp_radius);
         }
@@ -183,8 +192,8 @@ QueryFamily underflow_family(int ulp_radius) {
     // Kettner's first configuration shrunk into the subnormals: (1,1), (24,24), (48,48)
     // units of 2^-1074, moved by single subnormal steps.
     const double unit = std::numeric_limits<double>::denorm_min();
-    add_collinear_grid(family, {1 * unit, 1 * unit}, {24 * unit, 24 * unit},
-                       {48 * unit, 48 * unit}, 16, 1);
+    add_collinear_grid(family, {1 * unit, 1 * unit}, {24 * unit, 24 * unit}, {48 * unit, 48 * unit},
+                       16, 1);
     // Mixed magnitudes: one subnormal point against points of size 1.
     add_collinear_grid(family, {3 * unit, 3 * unit}, {0.5, 0.5}, {1, 1}, 16, 1);
     return family;

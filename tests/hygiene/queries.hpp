@@ -38,8 +38,8 @@ struct QueryFamily {
     std::vector<InsphereQuery> insphere;
 };
 
-/// Kettner et al.'s three near-collinear configurations (docs/background.md section 4), with p moved over a
-/// grid_size x grid_size grid of ulp steps, each with all three choices of pivot.
+/// Kettner et al.'s three near-collinear configurations (docs/background.md section 4), with p
+/// moved over a grid_size x grid_size grid of ulp steps, each with all three choices of pivot.
 QueryFamily kettner_family(int grid_size);
 
 /// Four points of an integer circle (radius 65) for many quadruples, scaled by powers of

@@ -59,7 +59,8 @@ TEST(PointFormats, NamesAndExtensions) {
     EXPECT_EQ(point_format_from_path("a.csv"), PointFormat::xy);
     EXPECT_EQ(point_format_from_path("a.xy"), PointFormat::xy);
     EXPECT_EQ(point_format_from_path("points"), PointFormat::xy);
-    for (PointFormat f : {PointFormat::xy, PointFormat::json, PointFormat::node, PointFormat::f64}) {
+    for (PointFormat f :
+         {PointFormat::xy, PointFormat::json, PointFormat::node, PointFormat::f64}) {
         EXPECT_EQ(point_format_from_name(to_string(f)), f);
     }
     EXPECT_FALSE(point_format_from_name("csv"));
@@ -109,15 +110,22 @@ TEST(ReadXy, ErrorsNameTheLine) {
 
 TEST(ReadXy, ByteOrderMarkAndQuotedFields) {
     // A spreadsheet's CSV export: a UTF-8 byte order mark, quoted header and values.
-    const Points p = parse_points("\xEF\xBB\xBF\"x\",\"y\"\r\n\"1.5\",2\r\n3, \"4\"\r\n",
-                                  PointFormat::xy);
+    const Points p =
+        parse_points("\xEF\xBB\xBF\"x\",\"y\"\r\n\"1.5\",2\r\n3, \"4\"\r\n", PointFormat::xy);
     ASSERT_EQ(p.size(), 2u);
     EXPECT_EQ(p[0], (Point2{1.5, 2}));
     EXPECT_EQ(p[1], (Point2{3, 4}));
     // The mark is skipped by the other text formats too; elsewhere it is an error.
     EXPECT_EQ(parse_points("\xEF\xBB\xBF[[1, 2]]", PointFormat::json).size(), 1u);
-    EXPECT_EQ(parse_points("\xEF\xBB\xBF" "1 2 0 0\n0 5 6\n", PointFormat::node).size(), 1u);
-    expect_error("1 2\n\xEF\xBB\xBF" "3 4\n", PointFormat::xy, 2, "not a number");
+    EXPECT_EQ(parse_points("\xEF\xBB\xBF"
+                           "1 2 0 0\n0 5 6\n",
+                           PointFormat::node)
+                  .size(),
+              1u);
+    expect_error(
+        "1 2\n\xEF\xBB\xBF"
+        "3 4\n",
+        PointFormat::xy, 2, "not a number");
     expect_error("\"x\",\"y\n", PointFormat::xy, 1, "unterminated quoted field");
     expect_error("\"x\"z,y\n", PointFormat::xy, 1, "a quote inside a field is not supported");
 }
@@ -157,9 +165,9 @@ TEST(ReadXy, ColumnsByNumberAndByName) {
     EXPECT_NE(std::string(columns_error(csv, "lon,height").what())
                   .find("line 1: no column named 'height' in the first line ('id', "),
               std::string::npos);
-    EXPECT_EQ(columns_error("1 2 3\n4 5 6\n", "2,4").line(), 1u);     // no 4th field
-    EXPECT_EQ(columns_error("1 2 3\n4 5\n", "1,2").line(), 2u);       // width changes
-    EXPECT_EQ(columns_error("a,b,a\n1,2,3\n", "a,b").line(), 1u);     // ambiguous name
+    EXPECT_EQ(columns_error("1 2 3\n4 5 6\n", "2,4").line(), 1u);        // no 4th field
+    EXPECT_EQ(columns_error("1 2 3\n4 5\n", "1,2").line(), 2u);          // width changes
+    EXPECT_EQ(columns_error("a,b,a\n1,2,3\n", "a,b").line(), 1u);        // ambiguous name
     EXPECT_EQ(columns_error("a,b,c\n1,2,3\n1,,3\n", "1,2").line(), 3u);  // picked and empty
 
     std::string error;
@@ -188,8 +196,8 @@ TEST(ReadXy, ThreadsGiveTheSamePointsAndTheSameErrorLine) {
     const Points one = parse_point_file(data, PointFormat::xy, ReadOptions{{}, 1}).points;
     ASSERT_EQ(one.size(), 90000u);
     for (const unsigned threads : {2u, 3u, 8u}) {
-        EXPECT_TRUE(same_bits(parse_point_file(data, PointFormat::xy, ReadOptions{{}, threads}).points,
-                              one))
+        EXPECT_TRUE(same_bits(
+            parse_point_file(data, PointFormat::xy, ReadOptions{{}, threads}).points, one))
             << threads;
     }
     // A bad line late in the input (in the last part) and a second one after it: the
@@ -264,10 +272,10 @@ TEST(ReadJson, ErrorsNameTheLine) {
 }
 
 TEST(ReadNode, ZeroAndOneBasedWithAttributesAndMarkers) {
-    const Points zero = parse_points("# Triangle node file\n3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n",
-                                     PointFormat::node);
-    const Points one = parse_points("3 2 1 1\n1 0 0 7.5 1\n2 1 0 -3 0\n\n3 0 1 0x1p3 1 # c\n",
-                                    PointFormat::node);
+    const Points zero =
+        parse_points("# Triangle node file\n3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n", PointFormat::node);
+    const Points one =
+        parse_points("3 2 1 1\n1 0 0 7.5 1\n2 1 0 -3 0\n\n3 0 1 0x1p3 1 # c\n", PointFormat::node);
     const Points defaults = parse_points("3\n0 0 0\n1 1 0\n2 0 1\n", PointFormat::node);
     const Points expected{{0, 0}, {1, 0}, {0, 1}};
     EXPECT_EQ(zero, expected);
@@ -349,7 +357,8 @@ Points tricky_points() {
 
 TEST(WritePoints, RoundTripIsBitExactInEveryFormat) {
     const Points p = tricky_points();
-    for (PointFormat f : {PointFormat::xy, PointFormat::json, PointFormat::node, PointFormat::f64}) {
+    for (PointFormat f :
+         {PointFormat::xy, PointFormat::json, PointFormat::node, PointFormat::f64}) {
         std::ostringstream out;
         write_points(out, p, f);
         std::istringstream in(out.str());

@@ -138,7 +138,8 @@ TEST(WriteTriangulation, SvgPathsStayShortForXmlParsers) {
     // most svg_path_items triangles each, as XML parsers limit an attribute's length.
     std::vector<Point2> grid;
     for (int i = 0; i < 60; ++i) {
-        for (int j = 0; j < 60; ++j) grid.push_back({static_cast<double>(i), static_cast<double>(j)});
+        for (int j = 0; j < 60; ++j)
+            grid.push_back({static_cast<double>(i), static_cast<double>(j)});
     }
     const delaunay::Result r = delaunay::triangulate(grid, AdaptiveKernel{});
     ASSERT_TRUE(r.ok());
@@ -152,7 +153,8 @@ TEST(WriteTriangulation, SvgPathsStayShortForXmlParsers) {
         const std::string d = svg.substr(at + 9, end - at - 9);
         longest = std::max(longest, d.size());
         ++paths;
-        for (std::size_t z = d.find('Z'); z != std::string::npos; z = d.find('Z', z + 1)) ++triangles;
+        for (std::size_t z = d.find('Z'); z != std::string::npos; z = d.find('Z', z + 1))
+            ++triangles;
         EXPECT_LE(std::count(d.begin(), d.end(), 'M'), static_cast<long>(svg_path_items));
     }
     const std::size_t n = r.triangulation.triangle_count();

@@ -55,8 +55,12 @@ TEST(VoronoiWriter, JsonOfAHandMadeDiagramReadsBackBitForBit) {
     delaunay::VoronoiDiagram d;
     const double max = std::numeric_limits<double>::max();
     const double tiny = std::numeric_limits<double>::denorm_min();
-    d.vertices = {{-0.0, 0.0}, {tiny, -tiny}, {max, -max}, {1.2345678901234568e20, 0.1},
-                  {1e-310, -2.2250738585072014e-308}, {0.30000000000000004, -1e22}};
+    d.vertices = {{-0.0, 0.0},
+                  {tiny, -tiny},
+                  {max, -max},
+                  {1.2345678901234568e20, 0.1},
+                  {1e-310, -2.2250738585072014e-308},
+                  {0.30000000000000004, -1e22}};
     d.site_offsets = {0, 3, 7, 10, 13, 16, 19};
     d.sites = {0, 1, 2, 0, 2, 3, 4, 1, 2, 3, 0, 1, 4, 2, 3, 4, 0, 3, 4};
     d.cell_offsets = {0, 2, 2, 5, 6, 6};
@@ -69,7 +73,8 @@ TEST(VoronoiWriter, JsonOfAHandMadeDiagramReadsBackBitForBit) {
     EXPECT_NE(text.find("],\n \"vertex_sites\": [[0, 1, 2], "), std::string::npos) << text;
     EXPECT_NE(text.find("],\n \"cells\": [[0, 1], [], [2, 3, 4], [5], []],\n"), std::string::npos)
         << text;
-    EXPECT_NE(text.find(",\n \"unbounded\": [true, false, false, true, true]}\n"), std::string::npos)
+    EXPECT_NE(text.find(",\n \"unbounded\": [true, false, false, true, true]}\n"),
+              std::string::npos)
         << text;
     expect_voronoi_json(text, d);
     const nlohmann::json j = nlohmann::json::parse(text);
@@ -144,8 +149,8 @@ TEST(VoronoiWriter, SvgShowsEdgesRaysAndRingsMergedVertices) {
     EXPECT_NE(ringed.find("#e67e22"), std::string::npos);
     EXPECT_EQ(std::count(ringed.begin(), ringed.end(), 'L'), 12) << ringed;
     // Huge and subnormal coordinates stay finite in the picture.
-    const std::vector<Point2> extreme = {{0, 0}, {4e-310, 0}, {0, 4e-310}, {1e300, 1e300},
-                                         {-1e300, 1e300}};
+    const std::vector<Point2> extreme = {
+        {0, 0}, {4e-310, 0}, {0, 4e-310}, {1e300, 1e300}, {-1e300, 1e300}};
     expect_whole_svg(to_svg(extreme, diagram_of(extreme)));
 }
 

@@ -70,7 +70,7 @@ inline void expect_whole_svg(const std::string& svg) {
 
 // The 12 lattice points of x^2 + y^2 = 25.
 inline std::vector<Point2> lattice_circle() {
-    return {{3, 4}, {-4, 3}, {-3, -4}, {4, -3}, {5, 0}, {0, -5},
+    return {{3, 4}, {-4, 3}, {-3, -4}, {4, -3}, {5, 0},  {0, -5},
             {0, 5}, {-5, 0}, {4, 3},   {-3, 4}, {3, -4}, {-4, -3}};
 }
 

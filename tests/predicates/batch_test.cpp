@@ -93,9 +93,9 @@ TEST(Batch, MatchesOneCallPerQueryWithTheScalarLoops) {
 TEST(Batch, IsExactInEveryRoundingMode) {
     for (const int mode : {FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO}) {
         const bool ok = rc::check("batch in a directed rounding mode", [mode] {
-            const auto f = *rc::gen::element(testing::Family::near_rounded_circle,
-                                             testing::Family::near_rounded_line,
-                                             testing::Family::uniform);
+            const auto f =
+                *rc::gen::element(testing::Family::near_rounded_circle,
+                                  testing::Family::near_rounded_line, testing::Family::uniform);
             const Queries q = gen_queries(f, 16);
             std::vector<Sign> want(16), got(16);
             batch::incircle(q.a, q.b, q.c, q.d, want);

@@ -98,7 +98,9 @@ TEST(Circumcenter, IsCorrectlyRoundedAtTheSubnormalBoundary) {
         const bool ok = rc::check("circumcenter near 2^-1022, " + std::string(f.name), [&] {
             const auto [a, b, c] = *testing::gen_query3(f.family);
             const int k = *rc::gen::inRange(-1026, -1014);
-            const auto move = [&](Point2 p) { return Point2{std::ldexp(p.x, k), std::ldexp(p.y, k)}; };
+            const auto move = [&](Point2 p) {
+                return Point2{std::ldexp(p.x, k), std::ldexp(p.y, k)};
+            };
             check_against_oracle(circumcenter, move(a), move(b), move(c));
         });
         EXPECT_TRUE(ok) << f.name;
@@ -161,10 +163,11 @@ TEST(Circumcenter, OverflowIsInfinityWithItsSign) {
 }
 
 TEST(Circumcenter, CollinearAndDuplicatePointsAreReported) {
-    for (const auto& [a, b, c] : {std::tuple{Point2{0, 0}, Point2{1, 1}, Point2{2, 2}},
-                                  std::tuple{Point2{0, 0}, Point2{0, 0}, Point2{1, 0}},
-                                  std::tuple{Point2{3, 3}, Point2{3, 3}, Point2{3, 3}},
-                                  std::tuple{Point2{0.1, 0.2}, Point2{0.3, 0.6}, Point2{0.5, 1.0}}}) {
+    for (const auto& [a, b, c] :
+         {std::tuple{Point2{0, 0}, Point2{1, 1}, Point2{2, 2}},
+          std::tuple{Point2{0, 0}, Point2{0, 0}, Point2{1, 0}},
+          std::tuple{Point2{3, 3}, Point2{3, 3}, Point2{3, 3}},
+          std::tuple{Point2{0.1, 0.2}, Point2{0.3, 0.6}, Point2{0.5, 1.0}}}) {
         const Circumcenter r = circumcenter(a, b, c);
         const bool collinear = !oracle_circumcenter(a, b, c);
         EXPECT_EQ(r.status == CircumcenterStatus::collinear, collinear);

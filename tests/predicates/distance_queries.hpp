@@ -29,8 +29,7 @@ inline Sign cgal_compare_distance(Point2 c, Point2 p, Point2 q) {
 
 /// The integer offset (a, b) mapped to another offset of exactly the same length:
 /// the eight symmetries of the square, or (3m, 4m) -> (5m, 0) style Pythagorean pairs.
-inline std::array<testing::LatticePoint, 2> tie_offsets(std::int64_t a, std::int64_t b,
-                                                        int which) {
+inline std::array<testing::LatticePoint, 2> tie_offsets(std::int64_t a, std::int64_t b, int which) {
     using L = testing::LatticePoint;
     const L p{a, b};
     switch (which) {
@@ -57,8 +56,8 @@ inline rc::Gen<DistanceQuery> gen_exact_tie() {
         const std::int64_t a = *testing::gen_toward_zero(-r, r);
         const std::int64_t b = *testing::gen_toward_zero(-r, r);
         const auto [p, q] = tie_offsets(a, b, *rc::gen::inRange(0, 8));
-        const int k = *testing::gen_scale_exponent(testing::min_exact_scale,
-                                                   testing::max_scale_for_bits(33));
+        const int k =
+            *testing::gen_scale_exponent(testing::min_exact_scale, testing::max_scale_for_bits(33));
         const auto pts = testing::place({{0, 0}, p, q}, c, k);
         return DistanceQuery{pts[0], pts[1], pts[2]};
     });

@@ -89,18 +89,19 @@ TEST(Shrinking, NearFamiliesShrinkToTheDegenerateConfiguration) {
         EXPECT_EQ(cgal_orient2d(a, b, c), Sign::zero) << "seed " << seed;
         const auto [p, q, r] = fully_shrunk(testing::gen_query3(Family::kettner), seed);
         EXPECT_EQ(cgal_orient2d(p, q, r), Sign::zero) << "seed " << seed;
-        const auto [e, f, g, h] = fully_shrunk(testing::gen_query4(Family::near_lattice_circle), seed);
+        const auto [e, f, g, h] =
+            fully_shrunk(testing::gen_query4(Family::near_lattice_circle), seed);
         EXPECT_EQ(cgal_incircle(e, f, g, h), Sign::zero) << "seed " << seed;
-        const auto [i, j, k, l] = fully_shrunk(testing::gen_query4(Family::near_integer_grid), seed);
+        const auto [i, j, k, l] =
+            fully_shrunk(testing::gen_query4(Family::near_integer_grid), seed);
         EXPECT_EQ(cgal_incircle(i, j, k, l), Sign::zero) << "seed " << seed;
     }
 }
 
 TEST(Cosine, ArrangementFindsASeparatingPairForFourPointsInGeneralPosition) {
     // Convex position (a square) and one point inside a triangle.
-    for (const testing::Query4& q :
-         {testing::Query4{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}},
-          testing::Query4{{{0, 0}, {4, 0}, {0, 4}, {1, 1}}}}) {
+    for (const testing::Query4& q : {testing::Query4{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}},
+                                     testing::Query4{{{0, 0}, {4, 0}, {0, 4}, {1, 1}}}}) {
         const auto r = testing::arrange_for_cosine(q);
         EXPECT_TRUE(cgal_cosine_precondition(r[0], r[1], r[2], r[3]));
     }

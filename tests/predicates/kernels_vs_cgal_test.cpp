@@ -24,8 +24,7 @@ TYPED_TEST_SUITE(KernelVsCgal, ExactKernels, KernelName);
 template <class Property>
 void for_every_family(const std::string& what, Property property) {
     for (const testing::FamilyInfo& f : all_families()) {
-        const bool ok = rc::check(what + " on " + std::string(f.name),
-                                  [&] { property(f.family); });
+        const bool ok = rc::check(what + " on " + std::string(f.name), [&] { property(f.family); });
         EXPECT_TRUE(ok) << what << " failed on family " << f.name;
     }
 }
@@ -78,8 +77,8 @@ TYPED_TEST(KernelVsCgal, CosineIsTheDocumentedExpressionEverywhere) {
     for_every_family(TypeParam::name() + " incircle_cosine == its expression",
                      [](testing::Family f) {
                          const bool arranged = *rc::gen::arbitrary<bool>();
-                         const auto [a, b, c, d] = arranged ? *testing::gen_cosine_query(f)
-                                                            : *testing::gen_query4(f);
+                         const auto [a, b, c, d] =
+                             arranged ? *testing::gen_cosine_query(f) : *testing::gen_query4(f);
                          const Sign got = TypeParam{}.incircle_cosine(a, b, c, d);
                          RC_ASSERT(got == independent_cosine_sign(a, b, c, d));
                          RC_ASSERT(got == GmpExactKernel::incircle_cosine(a, b, c, d));

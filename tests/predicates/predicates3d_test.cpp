@@ -161,24 +161,25 @@ TEST(Predicates3DConventions, InsphereIsPositiveInsideWhenOrient3dIsPositive) {
 TEST(Predicates3DStages, EveryStageDecidesSomeQueries) {
     int orient_seen[adaptive_stage_count] = {}, insphere_seen[adaptive_stage_count] = {};
     for (const testing::Family3Info& f : all_families3) {
-        const bool ok = rc::check(std::string("stages agree with GMP on ") + std::string(f.name), [&] {
-            const auto [a, b, c, d] = *testing::gen_query3d4(f.family);
-            AdaptiveStage stage{};
-            const Sign o = orient3d_staged(a, b, c, d, stage);
-            ++orient_seen[static_cast<int>(stage)];
-            RC_ASSERT(o == GmpExactKernel::orient3d(a, b, c, d));
-            const auto [p, q, r, s, t] = *testing::gen_query3d5(f.family);
-            const Sign i = insphere_staged(p, q, r, s, t, stage);
-            ++insphere_seen[static_cast<int>(stage)];
-            RC_ASSERT(i == GmpExactKernel::insphere(p, q, r, s, t));
-        });
+        const bool ok =
+            rc::check(std::string("stages agree with GMP on ") + std::string(f.name), [&] {
+                const auto [a, b, c, d] = *testing::gen_query3d4(f.family);
+                AdaptiveStage stage{};
+                const Sign o = orient3d_staged(a, b, c, d, stage);
+                ++orient_seen[static_cast<int>(stage)];
+                RC_ASSERT(o == GmpExactKernel::orient3d(a, b, c, d));
+                const auto [p, q, r, s, t] = *testing::gen_query3d5(f.family);
+                const Sign i = insphere_staged(p, q, r, s, t, stage);
+                ++insphere_seen[static_cast<int>(stage)];
+                RC_ASSERT(i == GmpExactKernel::insphere(p, q, r, s, t));
+            });
         EXPECT_TRUE(ok) << f.name;
     }
     for (AdaptiveStage s : {AdaptiveStage::filter, AdaptiveStage::small_integer,
-                            AdaptiveStage::double_word, AdaptiveStage::exact,
-                            AdaptiveStage::gmp}) {
+                            AdaptiveStage::double_word, AdaptiveStage::exact, AdaptiveStage::gmp}) {
         EXPECT_GT(orient_seen[static_cast<int>(s)], 0) << "orient3d stage " << static_cast<int>(s);
-        EXPECT_GT(insphere_seen[static_cast<int>(s)], 0) << "insphere stage " << static_cast<int>(s);
+        EXPECT_GT(insphere_seen[static_cast<int>(s)], 0)
+            << "insphere stage " << static_cast<int>(s);
     }
 }
 

@@ -136,9 +136,9 @@ TYPED_TEST(Regression, LastBitDifferences) {
 // overflow, underflow, or round.
 TYPED_TEST(Regression, DistanceAtTheEdgesOfTheRange) {
     const double h = 1e300, t = 1e-300;
-    this->distance({0, 0}, {h, 0}, {0, -h}, zero);       // squares overflow
+    this->distance({0, 0}, {h, 0}, {0, -h}, zero);  // squares overflow
     this->distance({0, 0}, {h, 0}, {0, std::nextafter(-h, 0.0)}, pos);
-    this->distance({0, 0}, {t, 0}, {0, -t}, zero);       // squares underflow to 0
+    this->distance({0, 0}, {t, 0}, {0, -t}, zero);  // squares underflow to 0
     this->distance({0, 0}, {t, 0}, {0, std::nextafter(-t, 0.0)}, pos);
     this->distance({0, 0}, {3 * tiny, 4 * tiny}, {5 * tiny, 0}, zero);  // subnormal 3-4-5
     this->distance({0, 0}, {3 * tiny, 4 * tiny}, {4 * tiny, 4 * tiny}, neg);

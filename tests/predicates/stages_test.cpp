@@ -44,13 +44,16 @@ testing::Query4 rescaled(const testing::Query4& q, int k) {
     if (m == 0) return q;
     const int shift = k - std::ilogb(m);
     testing::Query4 r;
-    for (std::size_t i = 0; i < 4; ++i) r[i] = {std::ldexp(q[i].x, shift), std::ldexp(q[i].y, shift)};
+    for (std::size_t i = 0; i < 4; ++i)
+        r[i] = {std::ldexp(q[i].x, shift), std::ldexp(q[i].y, shift)};
     return r;
 }
 
 using StageCounts = std::array<std::uint64_t, adaptive_stage_count>;
 
-std::uint64_t count(const StageCounts& c, AdaptiveStage s) { return c[static_cast<std::size_t>(s)]; }
+std::uint64_t count(const StageCounts& c, AdaptiveStage s) {
+    return c[static_cast<std::size_t>(s)];
+}
 
 /// Runs `check(query, counts)` on every family's queries as generated, where the families
 /// spread them over the whole exponent range, and rescaled to [1, 2) (where a near-
@@ -77,12 +80,13 @@ StageCounts on_every_family(const std::string& what, bool cosine_arrangement, Ch
 /// near-degenerate queries than the expansions after it (the property would then say
 /// little about it).
 void incircle_matches_cgal_on_every_family(const std::string& what) {
-    const StageCounts near = on_every_family(what, false, [](const testing::Query4& q, StageCounts& c) {
-        const auto [a, b, c4, d] = q;
-        AdaptiveStage stage{};
-        RC_ASSERT(incircle_staged(a, b, c4, d, stage) == cgal_incircle(a, b, c4, d));
-        ++c[static_cast<std::size_t>(stage)];
-    });
+    const StageCounts near =
+        on_every_family(what, false, [](const testing::Query4& q, StageCounts& c) {
+            const auto [a, b, c4, d] = q;
+            AdaptiveStage stage{};
+            RC_ASSERT(incircle_staged(a, b, c4, d, stage) == cgal_incircle(a, b, c4, d));
+            ++c[static_cast<std::size_t>(stage)];
+        });
     const auto dw = count(near, AdaptiveStage::double_word);
     const auto later = count(near, AdaptiveStage::stage_b) + count(near, AdaptiveStage::stage_c) +
                        count(near, AdaptiveStage::exact);
@@ -105,13 +109,16 @@ void cosine_matches_oracle_on_every_family(const std::string& what) {
     // Without the precondition (c and d not strictly on opposite sides of ab) the kernel
     // cannot hand the query to incircle; these count the cosine form's own stages.
     StageCounts without_precondition{};
-    const StageCounts near = on_every_family(what, true, [&](const testing::Query4& q, StageCounts& c) {
-        const auto [a, b, c4, d] = q;
-        AdaptiveStage stage{};
-        RC_ASSERT(incircle_cosine_staged(a, b, c4, d, stage) == independent_cosine_sign(a, b, c4, d));
-        ++c[static_cast<std::size_t>(stage)];
-        if (!cgal_cosine_precondition(a, b, c4, d)) ++without_precondition[static_cast<std::size_t>(stage)];
-    });
+    const StageCounts near =
+        on_every_family(what, true, [&](const testing::Query4& q, StageCounts& c) {
+            const auto [a, b, c4, d] = q;
+            AdaptiveStage stage{};
+            RC_ASSERT(incircle_cosine_staged(a, b, c4, d, stage) ==
+                      independent_cosine_sign(a, b, c4, d));
+            ++c[static_cast<std::size_t>(stage)];
+            if (!cgal_cosine_precondition(a, b, c4, d))
+                ++without_precondition[static_cast<std::size_t>(stage)];
+        });
     EXPECT_GT(count(without_precondition, AdaptiveStage::double_word), 0u)
         << "the cosine form's own double-word stage decided nothing";
     std::cout << what << ", near-degenerate families rescaled, calls per stage:";
@@ -156,9 +163,14 @@ TEST(IncircleDoubleWord, NeverDecidesAnExactTieWhoseEvaluationRounds) {
         const double x = static_cast<double>(m * m - n * n), y = static_cast<double>(2 * m * n);
         const double cx = static_cast<double>(*rc::gen::inRange<std::int64_t>(-(1 << 20), 1 << 20));
         const double cy = static_cast<double>(*rc::gen::inRange<std::int64_t>(-(1 << 20), 1 << 20));
-        const std::array<Point2, 8> on_circle{{{cx + x, cy + y}, {cx - y, cy + x}, {cx - x, cy - y},
-                                               {cx + y, cy - x}, {cx + y, cy + x}, {cx - x, cy + y},
-                                               {cx - y, cy - x}, {cx + x, cy - y}}};
+        const std::array<Point2, 8> on_circle{{{cx + x, cy + y},
+                                               {cx - y, cy + x},
+                                               {cx - x, cy - y},
+                                               {cx + y, cy - x},
+                                               {cx + y, cy + x},
+                                               {cx - x, cy + y},
+                                               {cx - y, cy - x},
+                                               {cx + x, cy - y}}};
         const auto pick = *rc::gen::unique<std::vector<std::size_t>>(
             4, rc::gen::inRange<std::size_t>(0, on_circle.size()));
         const Point2 a = on_circle[pick[0]], b = on_circle[pick[1]], c = on_circle[pick[2]],
@@ -209,7 +221,9 @@ TEST(IncircleDoubleWord, LeavesDifferencesOutsideItsRangeToTheExpansions) {
 TEST(SmallIntegers, DecideExactTiesOnALatticeCircle) {
     for (const double scale : {1.0, 0x1p-30, 0x1p40}) {
         for (const double shift : {0.0, 0x1p20, -12345.0}) {
-            const auto at = [&](double x, double y) { return Point2{(x + shift) * scale, (y - shift) * scale}; };
+            const auto at = [&](double x, double y) {
+                return Point2{(x + shift) * scale, (y - shift) * scale};
+            };
             // Points of the circle x^2 + y^2 = 25; c and d on opposite sides of ab, and
             // neither angle at c or d a right angle (a zero dot product decides earlier).
             const Point2 a = at(5, 0), b = at(0, 5), c = at(-4, 3), d = at(4, 3);
@@ -278,8 +292,12 @@ TEST(SmallIntegers, LeaveWiderDifferencesToTheOtherStages) {
 
 TEST(SmallIntegers, TwoEqualPointsAreATie) {
     const Point2 a{0.1, 0.7}, b{0.3, 0.2}, c{0.9, 0.4};
-    for (const auto& q : {std::array<Point2, 4>{a, a, b, c}, {a, b, a, c}, {a, b, c, a},
-                          {b, a, a, c}, {b, a, c, a}, {b, c, a, a}}) {
+    for (const auto& q : {std::array<Point2, 4>{a, a, b, c},
+                          {a, b, a, c},
+                          {a, b, c, a},
+                          {b, a, a, c},
+                          {b, a, c, a},
+                          {b, c, a, a}}) {
         AdaptiveStage stage{};
         EXPECT_EQ(incircle_staged(q[0], q[1], q[2], q[3], stage), Sign::zero);
         EXPECT_EQ(cgal_incircle(q[0], q[1], q[2], q[3]), Sign::zero);

@@ -132,8 +132,7 @@ TEST(WrongSignRateDistance, NudgedTies) {
     measure(MpfrKernel(53));
 }
 
-INSTANTIATE_TEST_SUITE_P(AllFamilies, WrongSignRate,
-                         ::testing::ValuesIn(testing::all_families()),
+INSTANTIATE_TEST_SUITE_P(AllFamilies, WrongSignRate, ::testing::ValuesIn(testing::all_families()),
                          [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -94,7 +94,8 @@ TEST(FailureMap, EveryPresetIsExactWithTheAdaptiveKernel) {
 TEST(FailureMap, PivotOrderIsACyclicPermutationWithTheSameExactSigns) {
     FailureMapSpec p = failure_map_preset("kettner1"), q = failure_map_preset("kettner1-pivot-q");
     p.width = p.height = q.width = q.height = 32;
-    EXPECT_EQ(compute_failure_map(p, GmpExactKernel{}, 1).exact, compute_failure_map(q, GmpExactKernel{}, 1).exact);
+    EXPECT_EQ(compute_failure_map(p, GmpExactKernel{}, 1).exact,
+              compute_failure_map(q, GmpExactKernel{}, 1).exact);
 }
 
 TEST(FailureMap, RejectsBadSpecs) {
@@ -140,7 +141,8 @@ TEST(FailureMap, SpaceMapsDrawTheExactPlaneAndBreakTheDoubleKernel) {
         EXPECT_EQ(compute_failure_map(spec, CppIntExactKernel{}, 2).wrong, 0u) << name;
     }
     // Kettner's picture in space: wrong signs on both sides of the plane, not just on it.
-    EXPECT_TRUE(wrong_on_both_sides(compute_failure_map(failure_map_preset("orient3d-tilted"), DoubleKernel{}, 2)));
+    EXPECT_TRUE(wrong_on_both_sides(
+        compute_failure_map(failure_map_preset("orient3d-tilted"), DoubleKernel{}, 2)));
 }
 
 TEST(FailureMap, SpaceMapAxesSwapTransposesTheMap) {
@@ -148,7 +150,8 @@ TEST(FailureMap, SpaceMapAxesSwapTransposesTheMap) {
     xy.width = xy.height = 40;
     FailureMapSpec yx = xy;
     yx.axes = {1, 0};
-    const FailureMap a = compute_failure_map(xy, DoubleKernel{}, 1), b = compute_failure_map(yx, DoubleKernel{}, 2);
+    const FailureMap a = compute_failure_map(xy, DoubleKernel{}, 1),
+                     b = compute_failure_map(yx, DoubleKernel{}, 2);
     for (std::size_t j = 0; j < 40; ++j) {
         for (std::size_t i = 0; i < 40; ++i) {
             ASSERT_EQ(a.signs[j * 40 + i], b.signs[i * 40 + j]) << i << ", " << j;
@@ -230,9 +233,10 @@ TEST(FailureMap, StudyWritesAValidPngAndAReportThatReferencesIt) {
         }
         return n;
     };
-    EXPECT_GT(dark_pixels(0, 0, img.width, layout.panel_y), 100u);                      // title, captions
+    EXPECT_GT(dark_pixels(0, 0, img.width, layout.panel_y), 100u);  // title, captions
     EXPECT_GT(dark_pixels(0, layout.panel_y, layout.panel_x[0] - 1, img.height), 20u);  // y label
-    EXPECT_GT(dark_pixels(0, layout.panel_y + layout.panel_height + 1, img.width, img.height), 200u);
+    EXPECT_GT(dark_pixels(0, layout.panel_y + layout.panel_height + 1, img.width, img.height),
+              200u);
     const std::string report = read_file(out / "report.md");
     EXPECT_NE(report.find("](" + study.rows[0].png + ")"), std::string::npos);
     EXPECT_NE(report.find("failure_map.csv"), std::string::npos);
@@ -285,7 +289,8 @@ TEST(Determinism, EveryStudyWritesTheSameFilesForOneAndTwoJobs) {
     }
     EXPECT_TRUE(one.count("precision/precision.svg"));
     EXPECT_TRUE(one.count("triangulation/triangulation_work.csv"));
-    EXPECT_NE(one.at("triangulation/report.md").find("## Work per insertion order"), std::string::npos);
+    EXPECT_NE(one.at("triangulation/report.md").find("## Work per insertion order"),
+              std::string::npos);
     EXPECT_NE(one.at("precision/report.md").find("](precision.svg)"), std::string::npos);
 }
 
@@ -298,7 +303,8 @@ TEST(Determinism, AnotherSeedDrawsOtherInputs) {
     b.seed = a.seed + 1;
     (void)run_precision_study(pr, a);
     (void)run_precision_study(pr, b);
-    EXPECT_NE(read_file(a.out / "precision_thresholds.csv"), read_file(b.out / "precision_thresholds.csv"));
+    EXPECT_NE(read_file(a.out / "precision_thresholds.csv"),
+              read_file(b.out / "precision_thresholds.csv"));
 }
 
 // --- precision ---------------------------------------------------------------------
@@ -377,38 +383,47 @@ TEST(Triangulation, ShrunkFixturesReplayTheirOutcome) {
             EXPECT_EQ(r.result.outcome, Outcome::delaunay) << r.result.detail;
         }
     }
-    for (Strategy o : all_orders) EXPECT_EQ(runs_per_order[o], 2u * 4u * 2u * 2u) << delaunay::to_string(o);
+    for (Strategy o : all_orders)
+        EXPECT_EQ(runs_per_order[o], 2u * 4u * 2u * 2u) << delaunay::to_string(o);
     ASSERT_FALSE(s.fixtures.empty()) << "the double kernel found nothing to shrink";
     bool saw_failure = false;
     std::map<Strategy, std::size_t> fixtures_per_order;
     for (const Fixture& f : s.fixtures) {
         ++fixtures_per_order[f.order];
         EXPECT_LE(f.size, f.original_size);
-        const Classification again = replay_fixture(out / f.file, parse_kernel(f.kernel), f.policy, f.order);
+        const Classification again =
+            replay_fixture(out / f.file, parse_kernel(f.kernel), f.policy, f.order);
         EXPECT_EQ(again.outcome, f.result.outcome) << f.file;
         EXPECT_EQ(again.detail, f.result.detail) << f.file;
-        EXPECT_EQ(replay_fixture(out / f.file, AdaptiveKernel{}, f.policy, f.order).outcome, Outcome::delaunay)
+        EXPECT_EQ(replay_fixture(out / f.file, AdaptiveKernel{}, f.policy, f.order).outcome,
+                  Outcome::delaunay)
             << f.file;
         // The paper's order keeps the old names; the others say which order they need.
         const std::string order_part = "-" + std::string(delaunay::to_string(f.order)) + "-";
-        EXPECT_EQ(f.file.find(order_part) != std::string::npos, f.order != Strategy::lexicographic) << f.file;
+        EXPECT_EQ(f.file.find(order_part) != std::string::npos, f.order != Strategy::lexicographic)
+            << f.file;
         const std::string text = read_file(out / f.file);
         const std::string replay = line_after(text, "# reproduce: exidel study replay -i FILE ");
-        const std::string triangulate = line_after(text, "#       and: exidel triangulate -i FILE ");
+        const std::string triangulate =
+            line_after(text, "#       and: exidel triangulate -i FILE ");
         ASSERT_FALSE(replay.empty()) << f.file;
         ASSERT_FALSE(triangulate.empty()) << f.file;
-        EXPECT_NE(triangulate.find("--order " + std::string(delaunay::to_string(f.order))), std::string::npos)
+        EXPECT_NE(triangulate.find("--order " + std::string(delaunay::to_string(f.order))),
+                  std::string::npos)
             << f.file;
 #ifdef EXIDEL_CLI_PATH
         // The header's own command lines reproduce the outcome.
         const std::string described = std::string(to_string(f.result.outcome)) +
                                       (f.result.detail.empty() ? "" : " (" + f.result.detail + ")");
-        EXPECT_EQ(cli_output("study replay -i " + (out / f.file).string() + " " + replay), described + "\n")
+        EXPECT_EQ(cli_output("study replay -i " + (out / f.file).string() + " " + replay),
+                  described + "\n")
             << f.file << ": " << replay;
         if (f.result.outcome == Outcome::failure) {
             const std::string flags = triangulate.substr(0, triangulate.find("   ("));
-            EXPECT_EQ(run_cli("triangulate -i " + (out / f.file).string() + " " + flags), 1) << f.file;
-            EXPECT_EQ(run_cli("triangulate -i " + (out / f.file).string() + " --kernel exact"), 0) << f.file;
+            EXPECT_EQ(run_cli("triangulate -i " + (out / f.file).string() + " " + flags), 1)
+                << f.file;
+            EXPECT_EQ(run_cli("triangulate -i " + (out / f.file).string() + " --kernel exact"), 0)
+                << f.file;
         }
 #endif
         saw_failure = saw_failure || f.result.outcome == Outcome::failure;
@@ -421,8 +436,8 @@ TEST(Triangulation, WorkPerOrderHasOneRowPerFamilyAndOrderAndTheAdaptiveKernelCe
     const fs::path out = work_dir("triangulation_work");
     TriangulationOptions tr;
     tr.kernels = {"adaptive"};
-    tr.families = {testing::Family::uniform, testing::Family::wide_exponents, testing::Family::near_lattice_circle,
-                   testing::Family::duplicates};
+    tr.families = {testing::Family::uniform, testing::Family::wide_exponents,
+                   testing::Family::near_lattice_circle, testing::Family::duplicates};
     tr.seeds = 2;
     tr.sizes = {300};
     tr.algorithms = {delaunay::Algorithm::external};  // the orders are the subject
@@ -439,7 +454,8 @@ TEST(Triangulation, WorkPerOrderHasOneRowPerFamilyAndOrderAndTheAdaptiveKernelCe
         EXPECT_EQ(w.sets, 2u) << where;
         EXPECT_EQ(w.points, 600u) << where;
         EXPECT_EQ(w.certified, w.sets) << where;
-        EXPECT_EQ(w.counters.flips(), w.counters.eroded_edges + w.counters.merge_deleted_edges) << where;
+        EXPECT_EQ(w.counters.flips(), w.counters.eroded_edges + w.counters.merge_deleted_edges)
+            << where;
         // Only strips merge, and only the radial sort (radial, and strips' radial strips)
         // compares distances; 300 points in 64-point strips always merge.
         if (w.order == Strategy::strips) {
@@ -478,10 +494,10 @@ TEST(Triangulation, WorkPerOrderHasOneRowPerFamilyAndOrderAndTheAdaptiveKernelCe
             << rows[1 + i];
     }
     for (std::size_t o = 0; o < all_orders.size(); ++o) {
-        EXPECT_EQ(rows[1 + s.work.size() + o].rfind("all families," + std::string(delaunay::to_string(all_orders[o])) +
-                                                        ",8,2400,",
-                                                    0),
-                  0u)
+        EXPECT_EQ(
+            rows[1 + s.work.size() + o].rfind(
+                "all families," + std::string(delaunay::to_string(all_orders[o])) + ",8,2400,", 0),
+            0u)
             << rows[1 + s.work.size() + o];
     }
 }
@@ -501,7 +517,8 @@ TEST(Triangulation, OrdersParseAndTheStudyRejectsAutomatic) {
     tr.seeds = 1;
     tr.sizes = {10};
     tr.orders = {Strategy::automatic};
-    EXPECT_THROW(run_triangulation_study(tr, quiet_run(work_dir("triangulation_automatic"))), std::invalid_argument);
+    EXPECT_THROW(run_triangulation_study(tr, quiet_run(work_dir("triangulation_automatic"))),
+                 std::invalid_argument);
     const delaunay::Options o = study_options(InCirclePolicy::cosine, Strategy::strips);
     EXPECT_EQ(o.incircle, InCirclePolicy::cosine);
     EXPECT_EQ(o.strategy, Strategy::strips);
@@ -533,11 +550,16 @@ TEST(FailureMap, CommandLineDrawsACustomSpaceMap) {
     EXPECT_EQ(run_cli(map + out.string() + " --axes xx"), 2);
     EXPECT_EQ(run_cli(map + out.string() + " --axes xw"), 2);
     EXPECT_EQ(run_cli(map + out.string() + " --move 4"), 2);
-    EXPECT_EQ(run_cli("study failure-map --predicate orient3d --points '1,2;3,4;5,6;7,8' --out " + out.string()), 2);
-    EXPECT_EQ(run_cli("study failure-map --predicate orient2d --points '1,2;3,4;5,6' --axes xz --out " +
+    EXPECT_EQ(run_cli("study failure-map --predicate orient3d --points '1,2;3,4;5,6;7,8' --out " +
                       out.string()),
               2);
-    EXPECT_EQ(run_cli("study failure-map --predicate insphere3 --points '1,2;3,4;5,6' --out " + out.string()), 2);
+    EXPECT_EQ(
+        run_cli("study failure-map --predicate orient2d --points '1,2;3,4;5,6' --axes xz --out " +
+                out.string()),
+        2);
+    EXPECT_EQ(run_cli("study failure-map --predicate insphere3 --points '1,2;3,4;5,6' --out " +
+                      out.string()),
+              2);
 #else
     GTEST_SKIP() << "the exidel binary is not built";
 #endif
@@ -550,12 +572,14 @@ TEST(Triangulation, AlgorithmsComeFromTheRegistry) {
     std::vector<delaunay::Algorithm> every;
     for (const delaunay::AlgorithmInfo& a : delaunay::algorithms()) every.push_back(a.id);
     EXPECT_EQ(parse_algorithms("all"), every);
-    EXPECT_EQ(parse_algorithms("external,external"), std::vector<delaunay::Algorithm>{delaunay::Algorithm::external});
+    EXPECT_EQ(parse_algorithms("external,external"),
+              std::vector<delaunay::Algorithm>{delaunay::Algorithm::external});
     EXPECT_THROW(parse_algorithms(""), std::invalid_argument);
     EXPECT_THROW(parse_algorithms("sideways"), std::invalid_argument);
     const std::vector<Method> methods = methods_of(every, all_orders);
     std::size_t expected = 0;
-    for (const delaunay::AlgorithmInfo& a : delaunay::algorithms()) expected += a.takes_order ? all_orders.size() : 1;
+    for (const delaunay::AlgorithmInfo& a : delaunay::algorithms())
+        expected += a.takes_order ? all_orders.size() : 1;
     EXPECT_EQ(methods.size(), expected);
     for (const Method& m : methods) {
         const delaunay::Options o = study_options(InCirclePolicy::determinant, m);
@@ -567,7 +591,8 @@ TEST(Triangulation, AlgorithmsComeFromTheRegistry) {
     tr.families = {testing::Family::uniform};
     tr.seeds = 1;
     tr.sizes = {30};  // no algorithms given: every one of the registry
-    const TriangulationStudy s = run_triangulation_study(tr, quiet_run(work_dir("triangulation_algorithms")));
+    const TriangulationStudy s =
+        run_triangulation_study(tr, quiet_run(work_dir("triangulation_algorithms")));
     std::set<delaunay::Algorithm> seen;
     for (const TriangulationRun& r : s.runs) {
         seen.insert(r.algorithm);
@@ -630,15 +655,20 @@ TEST(Triangulation, ShrinkingKeepsTheOutcomeAndRemovesEveryRemovablePoint) {
     }
     ASSERT_EQ(points.size(), 4u);
     std::vector<Point2> padded = points;
-    for (int i = 0; i < 12; ++i) padded.insert(padded.begin() + i, Point2{0x1p600 * i, -0x1p600 * i});
-    ASSERT_EQ(classify_triangulation(padded, dbl, InCirclePolicy::determinant).outcome, Outcome::failure);
-    const std::vector<Point2> shrunk = shrink_failing_input(padded, dbl, InCirclePolicy::determinant, c);
-    EXPECT_EQ(classify_triangulation(shrunk, dbl, InCirclePolicy::determinant).outcome, Outcome::failure);
+    for (int i = 0; i < 12; ++i)
+        padded.insert(padded.begin() + i, Point2{0x1p600 * i, -0x1p600 * i});
+    ASSERT_EQ(classify_triangulation(padded, dbl, InCirclePolicy::determinant).outcome,
+              Outcome::failure);
+    const std::vector<Point2> shrunk =
+        shrink_failing_input(padded, dbl, InCirclePolicy::determinant, c);
+    EXPECT_EQ(classify_triangulation(shrunk, dbl, InCirclePolicy::determinant).outcome,
+              Outcome::failure);
     EXPECT_LE(shrunk.size(), 4u);
     for (std::size_t i = 0; i < shrunk.size(); ++i) {
         std::vector<Point2> less = shrunk;
         less.erase(less.begin() + std::ptrdiff_t(i));
-        EXPECT_NE(classify_triangulation(less, dbl, InCirclePolicy::determinant).outcome, Outcome::failure);
+        EXPECT_NE(classify_triangulation(less, dbl, InCirclePolicy::determinant).outcome,
+                  Outcome::failure);
     }
 }
 
@@ -651,10 +681,13 @@ TEST(Regression, DoubleOverflowNoVisibleEdge) {
     const Classification c = replay_fixture(file, DoubleKernel{}, InCirclePolicy::determinant);
     EXPECT_EQ(c.outcome, Outcome::failure);
     EXPECT_EQ(c.detail, "no_visible_edge");
-    EXPECT_EQ(replay_fixture(file, AdaptiveKernel{}, InCirclePolicy::determinant).outcome, Outcome::delaunay);
+    EXPECT_EQ(replay_fixture(file, AdaptiveKernel{}, InCirclePolicy::determinant).outcome,
+              Outcome::delaunay);
 #ifdef EXIDEL_CLI_PATH
-    EXPECT_EQ(run_cli("triangulate -i " + file.string() + " --kernel double --order lexicographic"), 1);
-    EXPECT_EQ(run_cli("triangulate -i " + file.string() + " --kernel adaptive --order lexicographic"), 0);
+    EXPECT_EQ(run_cli("triangulate -i " + file.string() + " --kernel double --order lexicographic"),
+              1);
+    EXPECT_EQ(
+        run_cli("triangulate -i " + file.string() + " --kernel adaptive --order lexicographic"), 0);
 #endif
 }
 
@@ -664,38 +697,49 @@ TEST(Regression, DoubleOverflowRadialOrderFailsInsideTheHull) {
     // instead of the lexicographic one. The order option reaches the triangulation.
     const fs::path file = fs::path(EXIDEL_RESEARCH_FIXTURES) / "double_overflow_no_visible_edge.xy";
     for (Strategy order : {Strategy::radial, Strategy::strips}) {
-        const Classification c = replay_fixture(file, DoubleKernel{}, InCirclePolicy::determinant, order);
+        const Classification c =
+            replay_fixture(file, DoubleKernel{}, InCirclePolicy::determinant, order);
         EXPECT_EQ(c.outcome, Outcome::failure) << delaunay::to_string(order);
         EXPECT_EQ(c.detail, "point_inside_hull") << delaunay::to_string(order);
-        EXPECT_EQ(replay_fixture(file, AdaptiveKernel{}, InCirclePolicy::determinant, order).outcome,
-                  Outcome::delaunay);
+        EXPECT_EQ(
+            replay_fixture(file, AdaptiveKernel{}, InCirclePolicy::determinant, order).outcome,
+            Outcome::delaunay);
     }
-    EXPECT_EQ(replay_fixture(file, DoubleKernel{}, InCirclePolicy::determinant, Strategy::lexicographic).detail,
-              "no_visible_edge");
+    EXPECT_EQ(
+        replay_fixture(file, DoubleKernel{}, InCirclePolicy::determinant, Strategy::lexicographic)
+            .detail,
+        "no_visible_edge");
 #ifdef EXIDEL_CLI_PATH
     EXPECT_EQ(cli_output("study replay -i " + file.string() + " --kernel double --order radial"),
               "failure (point_inside_hull)\n");
-    EXPECT_EQ(cli_output("study replay -i " + file.string() + " --kernel double"), "failure (no_visible_edge)\n");
+    EXPECT_EQ(cli_output("study replay -i " + file.string() + " --kernel double"),
+              "failure (no_visible_edge)\n");
 #endif
 }
 
 TEST(Regression, LongDoubleCosineKettnerNotCcw) {
     // Kettner configuration 1 with p moved, and a fourth point on the diagonal: long
     // double's wrong orientation leaves a clockwise triangle.
-    const fs::path file = fs::path(EXIDEL_RESEARCH_FIXTURES) / "long_double_cosine_kettner_not_ccw.xy";
+    const fs::path file =
+        fs::path(EXIDEL_RESEARCH_FIXTURES) / "long_double_cosine_kettner_not_ccw.xy";
     const Classification c = replay_fixture(file, LongDoubleKernel{}, InCirclePolicy::cosine);
     EXPECT_EQ(c.outcome, Outcome::invalid);
     EXPECT_EQ(c.detail, "not_ccw");
-    EXPECT_EQ(replay_fixture(file, GmpExactKernel{}, InCirclePolicy::cosine).outcome, Outcome::delaunay);
+    EXPECT_EQ(replay_fixture(file, GmpExactKernel{}, InCirclePolicy::cosine).outcome,
+              Outcome::delaunay);
 }
 
 TEST(Regression, Mpfr106CosineNearLineNotDelaunay) {
     // 106 bits decide the degree-4 determinant here but not the cosine test's degree-8
     // comparison: the precision study's "cosine needs about 120 bits" inside a triangulation.
-    const fs::path file = fs::path(EXIDEL_RESEARCH_FIXTURES) / "mpfr106_cosine_near_line_not_delaunay.xy";
-    EXPECT_EQ(replay_fixture(file, MpfrKernel(106), InCirclePolicy::cosine).outcome, Outcome::not_delaunay);
-    EXPECT_EQ(replay_fixture(file, MpfrKernel(106), InCirclePolicy::determinant).outcome, Outcome::delaunay);
-    EXPECT_EQ(replay_fixture(file, MpfrKernel(120), InCirclePolicy::cosine).outcome, Outcome::delaunay);
+    const fs::path file =
+        fs::path(EXIDEL_RESEARCH_FIXTURES) / "mpfr106_cosine_near_line_not_delaunay.xy";
+    EXPECT_EQ(replay_fixture(file, MpfrKernel(106), InCirclePolicy::cosine).outcome,
+              Outcome::not_delaunay);
+    EXPECT_EQ(replay_fixture(file, MpfrKernel(106), InCirclePolicy::determinant).outcome,
+              Outcome::delaunay);
+    EXPECT_EQ(replay_fixture(file, MpfrKernel(120), InCirclePolicy::cosine).outcome,
+              Outcome::delaunay);
 }
 
 // --- stages ------------------------------------------------------------------------
@@ -715,7 +759,8 @@ TEST(Stages, CountsEveryCallAndUniformInputStaysInTheFilter) {
         if (r.context == "triangulation/determinant" || r.context == "triangulation/cosine") {
             EXPECT_EQ(distance_calls, 0u) << r.context;
         }
-        if (r.context == "triangulation/radial") radial_compared = radial_compared || distance_calls > 0;
+        if (r.context == "triangulation/radial")
+            radial_compared = radial_compared || distance_calls > 0;
         if (r.context != "stream") continue;
         for (const auto& per : r.counts) {
             std::uint64_t calls = 0;
@@ -730,7 +775,8 @@ TEST(Stages, CountsEveryCallAndUniformInputStaysInTheFilter) {
         }
     }
     EXPECT_TRUE(radial_compared);
-    EXPECT_NE(s.report.render().find("| triangulation/radial | compare_distance |"), std::string::npos);
+    EXPECT_NE(s.report.render().find("| triangulation/radial | compare_distance |"),
+              std::string::npos);
 }
 
 TEST(Stages, CountingKernelAgreesWithTheAdaptiveKernel) {
@@ -776,9 +822,10 @@ std::pair<std::string, int> without_lines(const std::string& text, std::string_v
 
 /// Every file of `a` and `b` is in both and the same, reports but for their one timing
 /// line; counts the reports.
-void expect_same_files(const std::map<std::string, std::string>& a, const std::map<std::string, std::string>& b,
-                       std::size_t& reports) {
-    for (const auto& [name, bytes] : b) EXPECT_TRUE(a.count(name)) << name << " appeared in the rerun only";
+void expect_same_files(const std::map<std::string, std::string>& a,
+                       const std::map<std::string, std::string>& b, std::size_t& reports) {
+    for (const auto& [name, bytes] : b)
+        EXPECT_TRUE(a.count(name)) << name << " appeared in the rerun only";
     for (const auto& [name, bytes] : a) {
         ASSERT_TRUE(b.count(name)) << name << " is missing from the rerun";
         if (fs::path(name).filename() == "report.md") {
@@ -828,7 +875,8 @@ TEST(Reproducibility, TheReportsRerunLineWritesTheSameFilesAgain) {
     // with the defaults `all` ran it with. Run for the two quick ones.
     const fs::path third = work_dir("rerun_third");
     for (const std::string study : {"failure-map", "precision", "triangulation", "stages"}) {
-        const std::string line = line_after(read_file(first / "out" / study / "report.md"), std::string(rerun_prefix));
+        const std::string line =
+            line_after(read_file(first / "out" / study / "report.md"), std::string(rerun_prefix));
         const std::string own = line.substr(0, line.find('`'));
         EXPECT_EQ(own, "exidel study " + study + " --quick --seed 20250704 --out out/" + study);
         if (study != "failure-map" && study != "precision") continue;
@@ -880,12 +928,14 @@ TEST(Reproducibility, OneStudysRerunLineHasEveryOptionThatChangesAResult) {
     GTEST_SKIP() << "the exidel command was not built";
 #else
     const fs::path dir = work_dir("rerun_one");
-    ASSERT_EQ(run_in(dir, std::string(EXIDEL_CLI_PATH) +
-                              " study failure-map --predicate orient2d --points '0.5,0.5;12,12;24,24'"
-                              " --width 16 --height 8 --kernel double --jobs 2 --out 'my maps'"),
-              0);
+    ASSERT_EQ(
+        run_in(dir, std::string(EXIDEL_CLI_PATH) +
+                        " study failure-map --predicate orient2d --points '0.5,0.5;12,12;24,24'"
+                        " --width 16 --height 8 --kernel double --jobs 2 --out 'my maps'"),
+        0);
     const std::string report = read_file(dir / "my maps" / "report.md");
-    EXPECT_EQ(line_after(report, std::string(rerun_prefix)).substr(0, line_after(report, std::string(rerun_prefix)).find('`')),
+    EXPECT_EQ(line_after(report, std::string(rerun_prefix))
+                  .substr(0, line_after(report, std::string(rerun_prefix)).find('`')),
               "exidel study failure-map --seed 20250704 --kernel double --predicate orient2d "
               "--points '0.5,0.5;12,12;24,24' --width 16 --height 8 --out 'my maps'");
     EXPECT_EQ(without_lines(report, timing_prefix).second, 1);
@@ -939,8 +989,8 @@ TEST(BuildInfo, TheCommitIsTheCheckoutsHead) {
     if (hash.ends_with("-dirty")) hash.resize(hash.size() - 6);
     if (const std::size_t g = hash.rfind("-g"); g != std::string::npos) hash = hash.substr(g + 2);
     EXPECT_GE(hash.size(), 12u) << commit;
-    EXPECT_TRUE(head.starts_with(hash)) << "build_info().commit " << commit << ", HEAD " << head
-                                        << " (rebuild after committing)";
+    EXPECT_TRUE(head.starts_with(hash))
+        << "build_info().commit " << commit << ", HEAD " << head << " (rebuild after committing)";
 }
 
 }  // namespace

@@ -43,8 +43,8 @@ inline Sign cgal_orient3d(Point3 a, Point3 b, Point3 c, Point3 d) {
 /// when e is inside and orientation(a, b, c, d) is positive, i.e. when Shewchuk's orient3d
 /// is negative, so it is the opposite of exidel's insphere.
 inline Sign cgal_insphere(Point3 a, Point3 b, Point3 c, Point3 d, Point3 e) {
-    return -to_sign(CGAL::side_of_oriented_sphere(to_cgal(a), to_cgal(b), to_cgal(c), to_cgal(d),
-                                                  to_cgal(e)));
+    return -to_sign(
+        CGAL::side_of_oriented_sphere(to_cgal(a), to_cgal(b), to_cgal(c), to_cgal(d), to_cgal(e)));
 }
 
 /// True when c and d are strictly on opposite sides of line ab, decided by CGAL.

@@ -48,13 +48,13 @@ struct MpfrAtBound {
     }
     static Sign insphere(Point3 a, Point3 b, Point3 c, Point3 d, Point3 e) {
         const std::array q{a, b, c, d, e};
-        return MpfrKernel(testing::insphere_bits(testing::grid_bits(q)))
-            .insphere(a, b, c, d, e);
+        return MpfrKernel(testing::insphere_bits(testing::grid_bits(q))).insphere(a, b, c, d, e);
     }
 };
 static_assert(PredicateKernel3D<MpfrAtBound>);
 
-using ExactKernels = ::testing::Types<GmpExactKernel, CppIntExactKernel, MpfrAtBound, AdaptiveKernel>;
+using ExactKernels =
+    ::testing::Types<GmpExactKernel, CppIntExactKernel, MpfrAtBound, AdaptiveKernel>;
 
 /// Every kernel of the registry (exidel/predicates/registry.hpp) that claims exactness
 /// runs the exact-kernel tests: adding one there without adding it here fails to compile.
@@ -62,7 +62,7 @@ template <class K, class... Ts>
 constexpr bool listed(::testing::Types<Ts...>*) {
     return (std::is_same_v<K, Ts> || ...);
 }
-#define EXIDEL_EXACT_KERNEL_IS_TESTED_(K, spelling, summary)                        \
+#define EXIDEL_EXACT_KERNEL_IS_TESTED_(K, spelling, summary)                      \
     static_assert(!K::is_exact || listed<K>(static_cast<ExactKernels*>(nullptr)), \
                   "add " #K " to ExactKernels: it claims exactness");
 EXIDEL_KERNELS(EXIDEL_EXACT_KERNEL_IS_TESTED_)

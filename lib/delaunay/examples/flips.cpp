@@ -51,8 +51,8 @@ int main(int argc, char** argv) {
         std::printf("%10zu %10.3f %12.3f %12.3f %12.1f %12.1f %12.1f %s\n", n,
                     static_cast<double>(c.eroded_edges) / dn,
                     static_cast<double>(c.incircle_tests) / dn,
-                    static_cast<double>(c.tangent_orientations) / dn, det_ms, cos_ms,
-                    dbl_ms, certified ? "yes" : "NO");
+                    static_cast<double>(c.tangent_orientations) / dn, det_ms, cos_ms, dbl_ms,
+                    certified ? "yes" : "NO");
     }
     return 0;
 }

@@ -68,7 +68,8 @@ public:
     Certificate run() {
         for (std::size_t i = 0; i < pts_.size(); ++i) {
             if (!finite(pts_[i].x) || !finite(pts_[i].y)) {
-                add(FindingKind::non_finite_input, i, -1, "input point has a non-finite coordinate");
+                add(FindingKind::non_finite_input, i, -1,
+                    "input point has a non-finite coordinate");
                 return std::move(cert_);
             }
         }
@@ -90,9 +91,8 @@ private:
     void add(FindingKind kind, I index, J other, std::string message) {
         ++cert_.total_findings;
         if (cert_.findings.size() < Certificate::max_findings) {
-            cert_.findings.push_back(
-                {kind, static_cast<std::int64_t>(index), static_cast<std::int64_t>(other),
-                 std::move(message)});
+            cert_.findings.push_back({kind, static_cast<std::int64_t>(index),
+                                      static_cast<std::int64_t>(other), std::move(message)});
         }
     }
 
@@ -176,7 +176,8 @@ private:
                     "vertex index of half-edge out of range");
             }
             if (tri_.halfedges[e] < -1 || tri_.halfedges[e] >= size) {
-                add(FindingKind::index_out_of_range, e, tri_.halfedges[e], "twin index out of range");
+                add(FindingKind::index_out_of_range, e, tri_.halfedges[e],
+                    "twin index out of range");
             }
         }
         for (std::size_t j = 0; j < tri_.hull.size(); ++j) {
@@ -218,7 +219,8 @@ private:
         const std::size_t before = cert_.total_findings;
         const auto& T = tri_.triangles;
         for (std::size_t t = 0; 3 * t < T.size(); ++t) {
-            if (K::orient2d(pts_[T[3 * t]], pts_[T[3 * t + 1]], pts_[T[3 * t + 2]]) != Sign::positive) {
+            if (K::orient2d(pts_[T[3 * t]], pts_[T[3 * t + 1]], pts_[T[3 * t + 2]]) !=
+                Sign::positive) {
                 add(FindingKind::not_ccw, t, -1, "triangle is not strictly counter-clockwise");
             }
         }
@@ -253,7 +255,8 @@ private:
         std::uint32_t v = T[static_cast<std::size_t>(start)];
         do {
             if (out[v] < 0 || cycle.size() > boundary_edges) {
-                add(FindingKind::boundary_broken, v, -1, "the boundary does not close into a cycle");
+                add(FindingKind::boundary_broken, v, -1,
+                    "the boundary does not close into a cycle");
                 return false;
             }
             cycle.push_back(v);
@@ -280,13 +283,15 @@ private:
             // lexicographic order along its line); otherwise the boundary reverses.
             const bool straight_on = lex_less(a, b) == lex_less(b, c);
             if (turn == Sign::negative || (turn == Sign::zero && !straight_on)) {
-                add(FindingKind::boundary_not_convex, j, cycle[j], "boundary turns right or reverses");
+                add(FindingKind::boundary_not_convex, j, cycle[j],
+                    "boundary turns right or reverses");
             }
             if (lex_less(a, b) && lex_less(c, b)) ++maxima;
         }
         // A boundary that only turns left winds w times and has w lexicographic maxima.
         if (maxima != 1) {
-            add(FindingKind::boundary_winding, maxima, -1, "boundary has this many lexicographic maxima");
+            add(FindingKind::boundary_winding, maxima, -1,
+                "boundary has this many lexicographic maxima");
         }
         return cert_.total_findings == before;
     }
@@ -310,7 +315,8 @@ private:
             }
         }
         if (reached != nt) {
-            add(FindingKind::boundary_broken, reached, nt, "triangles form more than one component");
+            add(FindingKind::boundary_broken, reached, nt,
+                "triangles form more than one component");
             return false;
         }
         return true;
@@ -325,7 +331,8 @@ private:
             ++used_vertices_;
         }
         for (std::uint32_t v : order_) {
-            if (!used[v]) add(FindingKind::missing_point, v, -1, "distinct input point is not a vertex");
+            if (!used[v])
+                add(FindingKind::missing_point, v, -1, "distinct input point is not a vertex");
         }
     }
 

@@ -8,11 +8,11 @@
 
 namespace exidel::delaunay {
 
-#define EXIDEL_DELAUNAY_INSTANTIATE(K, spelling, summary)                                  \
-    template Result triangulate<Instrumentation::off, K>(std::span<const Point2>, const K&, \
-                                                         const Options&);                   \
-    template Result triangulate<Instrumentation::counters, K>(std::span<const Point2>,      \
-                                                              const K&, const Options&);    \
+#define EXIDEL_DELAUNAY_INSTANTIATE(K, spelling, summary)                                        \
+    template Result triangulate<Instrumentation::off, K>(std::span<const Point2>, const K&,      \
+                                                         const Options&);                        \
+    template Result triangulate<Instrumentation::counters, K>(std::span<const Point2>, const K&, \
+                                                              const Options&);                   \
     template SortedHull sorted_convex_hull<K>(std::span<const Point2>, const K&);
 EXIDEL_KERNELS(EXIDEL_DELAUNAY_INSTANTIATE)
 #undef EXIDEL_DELAUNAY_INSTANTIATE
@@ -42,7 +42,7 @@ Result detail::triangulate_adaptive(std::span<const Point2> points, const Option
 
 template Result detail::triangulate_adaptive<Instrumentation::off>(std::span<const Point2>,
                                                                    const Options&);
-template Result detail::triangulate_adaptive<Instrumentation::counters>(
-    std::span<const Point2>, const Options&);
+template Result detail::triangulate_adaptive<Instrumentation::counters>(std::span<const Point2>,
+                                                                        const Options&);
 
 }  // namespace exidel::delaunay

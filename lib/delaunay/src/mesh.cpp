@@ -11,8 +11,7 @@
 namespace exidel::delaunay::detail {
 
 std::optional<Failure> to_triangulation(Mesh& mesh, std::span<const std::uint32_t> input_of,
-                                        std::uint32_t first, Triangulation& tri,
-                                        unsigned threads) {
+                                        std::uint32_t first, Triangulation& tri, unsigned threads) {
     auto& tris = mesh.triangles;
     auto& half = mesh.halfedges;
     // Compact: live triangles keep their relative order, in fixed chunks of slots on
@@ -53,19 +52,20 @@ std::optional<Failure> to_triangulation(Mesh& mesh, std::span<const std::uint32_
                     lost[c] = h;
                     return;
                 }
-                half[3 * u + j] = h < 0 ? -1
-                                        : static_cast<std::int32_t>(
-                                              3 * new_slot[static_cast<std::size_t>(h) / 3] +
-                                              static_cast<std::size_t>(h) % 3);
+                half[3 * u + j] =
+                    h < 0
+                        ? -1
+                        : static_cast<std::int32_t>(3 * new_slot[static_cast<std::size_t>(h) / 3] +
+                                                    static_cast<std::size_t>(h) % 3);
             }
             ++u;
         }
     });
     for (const std::int32_t h : lost) {
         if (h >= 0) {
-            return Failure{FailureKind::result_inconsistent, no_index, no_index,
-                           "a triangle's neighbour across half-edge " + std::to_string(h) +
-                               " was destroyed"};
+            return Failure{
+                FailureKind::result_inconsistent, no_index, no_index,
+                "a triangle's neighbour across half-edge " + std::to_string(h) + " was destroyed"};
         }
     }
     for (std::size_t c = 0; c < chunks; ++c) {

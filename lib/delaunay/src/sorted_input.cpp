@@ -195,9 +195,8 @@ std::optional<Failure> sort_and_dedupe(std::span<const Point2> input, SortedInpu
     // points per bucket, at most 2^22 buckets: two passes), then each bucket's run sorted
     // by (x, y, index). Together: the lexicographic order, ties by input index, so the
     // first occurrence of a repeated point comes first.
-    const auto buckets = static_cast<std::uint32_t>(
-        std::clamp<std::size_t>(std::bit_ceil(std::max<std::size_t>(n / 8, 1)), 1,
-                                std::size_t{1} << (2 * digit_bits)));
+    const auto buckets = static_cast<std::uint32_t>(std::clamp<std::size_t>(
+        std::bit_ceil(std::max<std::size_t>(n / 8, 1)), 1, std::size_t{1} << (2 * digit_bits)));
     const Buckets bucket_of(lo, hi, buckets);
     FreshBuffer<Record> memory(n), spare;
     std::span<Record> records(memory.get(), n);

@@ -57,8 +57,13 @@ struct Duplicates {
 /// long next to handing it out. The output never depends on the thread count.
 constexpr std::size_t parallel_pieces = 64;
 
-VoronoiBuilder::VoronoiBuilder(std::span<const Point2> points, const Triangulation& t, unsigned threads)
-    : points_(points), t_(t), threads_(threads), centres_(t.triangle_count()), parent_(t.triangle_count()) {
+VoronoiBuilder::VoronoiBuilder(std::span<const Point2> points, const Triangulation& t,
+                               unsigned threads)
+    : points_(points),
+      t_(t),
+      threads_(threads),
+      centres_(t.triangle_count()),
+      parent_(t.triangle_count()) {
     const std::size_t count = centres_.size();
     const std::size_t pieces = std::min(parallel_pieces, std::max<std::size_t>(count / 4096, 1));
     std::vector<std::array<std::uint64_t, 3>> stages(pieces);
@@ -145,7 +150,8 @@ VoronoiDiagram VoronoiBuilder::finish(std::uint64_t tests) && {
     // The sites of each vertex: a triangle's three corners, or the boundary of a group's
     // union (a convex polygon inscribed in the circle), counter-clockwise, from the
     // smallest index. Boundary half-edges of the merged groups, bucketed by vertex:
-    std::vector<std::uint32_t> boundary_offsets(merges_ > 0 ? d.vertices.size() + 1 : 0, 0), boundary;
+    std::vector<std::uint32_t> boundary_offsets(merges_ > 0 ? d.vertices.size() + 1 : 0, 0),
+        boundary;
     const auto on_group_boundary = [&](std::size_t e) {
         const std::uint32_t v = vertex_of_edge(e);
         return group_size[v] > 1 && (twin[e] < 0 || vertex_of_edge(twin[e]) != v);
@@ -153,11 +159,13 @@ VoronoiDiagram VoronoiBuilder::finish(std::uint64_t tests) && {
     if (merges_ > 0) {  // else every group is one triangle
         for (std::size_t e = 0; e < tri.size(); ++e)
             if (on_group_boundary(e)) ++boundary_offsets[vertex_of_edge(e) + 1];
-        std::partial_sum(boundary_offsets.begin(), boundary_offsets.end(), boundary_offsets.begin());
+        std::partial_sum(boundary_offsets.begin(), boundary_offsets.end(),
+                         boundary_offsets.begin());
         boundary.resize(boundary_offsets.back());
         std::vector<std::uint32_t> fill(boundary_offsets.begin(), boundary_offsets.end() - 1);
         for (std::size_t e = 0; e < tri.size(); ++e)
-            if (on_group_boundary(e)) boundary[fill[vertex_of_edge(e)]++] = static_cast<std::uint32_t>(e);
+            if (on_group_boundary(e))
+                boundary[fill[vertex_of_edge(e)]++] = static_cast<std::uint32_t>(e);
     }
     const Duplicates dups(t_, n);
     std::vector<std::uint32_t> ring;
@@ -185,15 +193,16 @@ VoronoiDiagram VoronoiBuilder::finish(std::uint64_t tests) && {
             // Follow the boundary: the edge leaving a corner starts where the previous ended.
             const auto begin = boundary.begin() + boundary_offsets[v];
             const auto end = boundary.begin() + boundary_offsets[v + 1];
-            std::sort(begin, end, [&](std::uint32_t a, std::uint32_t b) { return tri[a] < tri[b]; });
+            std::sort(begin, end,
+                      [&](std::uint32_t a, std::uint32_t b) { return tri[a] < tri[b]; });
             std::uint32_t e = *begin;
             for (std::ptrdiff_t k = 0; k < end - begin; ++k) {
                 ring.push_back(tri[e]);
                 const std::uint32_t to = tri[next_halfedge(e)];
                 if (to == ring.front()) break;
-                const auto it = std::lower_bound(begin, end, to, [&](std::uint32_t a, std::uint32_t value) {
-                    return tri[a] < value;
-                });
+                const auto it = std::lower_bound(
+                    begin, end, to,
+                    [&](std::uint32_t a, std::uint32_t value) { return tri[a] < value; });
                 if (it == end || tri[*it] != to) break;  // not a disc: only an inexact kernel
                 e = *it;
             }
@@ -239,7 +248,8 @@ VoronoiDiagram VoronoiBuilder::finish(std::uint64_t tests) && {
     struct Walked {
         std::uint32_t at, size, piece;
     };
-    const std::size_t pieces = std::min(parallel_pieces, std::max<std::size_t>(order.size() / 4096, 1));
+    const std::size_t pieces =
+        std::min(parallel_pieces, std::max<std::size_t>(order.size() / 4096, 1));
     std::vector<std::vector<std::uint32_t>> buffers(pieces);
     std::vector<Walked> walked_cell(n, Walked{0, 0, 0});
     parallel_for(pieces, threads_, [&](std::size_t j) {
@@ -255,8 +265,10 @@ VoronoiDiagram VoronoiBuilder::finish(std::uint64_t tests) && {
                 std::uint32_t e = e0;
                 for (std::size_t step = 0; step < tri.size(); ++step) {
                     const Step here = steps[e];
-                    if (walked.size() == first || walked.back() != here.vertex) walked.push_back(here.vertex);
-                    if (here.next < 0) {  // e's predecessor (previous neighbour -> s) is on the hull
+                    if (walked.size() == first || walked.back() != here.vertex)
+                        walked.push_back(here.vertex);
+                    if (here.next <
+                        0) {  // e's predecessor (previous neighbour -> s) is on the hull
                         exit_edge = static_cast<std::int32_t>(prev_halfedge(e));
                         break;
                     }
@@ -268,18 +280,21 @@ VoronoiDiagram VoronoiBuilder::finish(std::uint64_t tests) && {
                 // of a half-edge leaving s ends at s; the next one leaves s again) and
                 // walk once more from there. Only hull sites pay this.
                 for (std::size_t step = 0; step < tri.size() && twin[e0] >= 0; ++step)
-                    e0 = static_cast<std::uint32_t>(next_halfedge(static_cast<std::size_t>(twin[e0])));
+                    e0 = static_cast<std::uint32_t>(
+                        next_halfedge(static_cast<std::size_t>(twin[e0])));
                 walked.resize(first);
                 exit_edge = -1;
             }
             if (exit_edge >= 0) {
                 d.unbounded[s] = 1;
                 d.entry_ray[s] = outward_normal(points_[s], points_[tri[next_halfedge(e0)]]);
-                d.exit_ray[s] = outward_normal(points_[tri[static_cast<std::size_t>(exit_edge)]], points_[s]);
+                d.exit_ray[s] =
+                    outward_normal(points_[tri[static_cast<std::size_t>(exit_edge)]], points_[s]);
             } else if (walked.size() - first > 1 && walked.back() == walked[first]) {
                 walked.pop_back();  // the walk closed on the vertex it started in
             }
-            walked_cell[s] = {static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(walked.size() - first),
+            walked_cell[s] = {static_cast<std::uint32_t>(first),
+                              static_cast<std::uint32_t>(walked.size() - first),
                               static_cast<std::uint32_t>(j)};
         }
     });
@@ -298,7 +313,8 @@ VoronoiDiagram VoronoiBuilder::finish(std::uint64_t tests) && {
     for (std::size_t i = 0; i < n; ++i) {
         const std::uint32_t s = t_.vertex_of_input[i];
         const Walked w = walked_cell[s];
-        std::copy_n(buffers[w.piece].begin() + w.at, w.size, d.cell_vertices.begin() + d.cell_offsets[i]);
+        std::copy_n(buffers[w.piece].begin() + w.at, w.size,
+                    d.cell_vertices.begin() + d.cell_offsets[i]);
     }
     return d;
 }

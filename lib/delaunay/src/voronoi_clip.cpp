@@ -74,7 +74,8 @@ std::vector<Corner> cut(const std::vector<Corner>& poly, const HalfPlane& h) {
         }
         if ((fp < 0 && fq > 0) || (fp > 0 && fq < 0)) {
             const Rational t = fp / (fp - fq);
-            out.push_back({p.x + t * (q.x - p.x), p.y + t * (q.y - p.y), {shared_line(p, q), h.line}});
+            out.push_back(
+                {p.x + t * (q.x - p.x), p.y + t * (q.y - p.y), {shared_line(p, q), h.line}});
         }
     }
     // Merge repeated points (a cut through a corner); fewer than three corners is empty.
@@ -87,7 +88,8 @@ std::vector<Corner> cut(const std::vector<Corner>& poly, const HalfPlane& h) {
         }
     }
     while (merged.size() > 1 && same_point(merged.front(), merged.back())) {
-        merged.front().on.insert(merged.front().on.end(), merged.back().on.begin(), merged.back().on.end());
+        merged.front().on.insert(merged.front().on.end(), merged.back().on.begin(),
+                                 merged.back().on.end());
         merged.pop_back();
     }
     if (merged.size() < 3) merged.clear();
@@ -115,7 +117,8 @@ ClippedVoronoi clip(const VoronoiDiagram& d, std::span<const Point2> points, con
                     const Box& box) {
     if (!(std::isfinite(box.xmin) && std::isfinite(box.ymin) && std::isfinite(box.xmax) &&
           std::isfinite(box.ymax) && box.xmin < box.xmax && box.ymin < box.ymax))
-        throw std::invalid_argument("clip: the box must be finite with xmin < xmax and ymin < ymax");
+        throw std::invalid_argument(
+            "clip: the box must be finite with xmin < xmax and ymin < ymax");
     const std::size_t n = points.size();
     const auto inside = [&](Point2 p) {
         return box.xmin < p.x && p.x < box.xmax && box.ymin < p.y && p.y < box.ymax;
@@ -137,7 +140,8 @@ ClippedVoronoi clip(const VoronoiDiagram& d, std::span<const Point2> points, con
 
     // The chain neighbours of a collinear diagram.
     std::vector<std::uint32_t> chain_position(n, 0);
-    for (std::size_t k = 0; k < d.chain.size(); ++k) chain_position[d.chain[k]] = static_cast<std::uint32_t>(k);
+    for (std::size_t k = 0; k < d.chain.size(); ++k)
+        chain_position[d.chain[k]] = static_cast<std::uint32_t>(k);
 
     std::vector<std::uint32_t> neighbours;
     for (std::size_t s = 0; s < n; ++s) {
@@ -145,7 +149,8 @@ ClippedVoronoi clip(const VoronoiDiagram& d, std::span<const Point2> points, con
         const auto cell = d.cell(s);
         std::vector<std::uint32_t>& out = cell_of_site[s];
         if (!d.collinear && d.unbounded[s] == 0 &&
-            std::all_of(cell.begin(), cell.end(), [&](std::uint32_t v) { return inside(d.vertices[v]); })) {
+            std::all_of(cell.begin(), cell.end(),
+                        [&](std::uint32_t v) { return inside(d.vertices[v]); })) {
             out.assign(cell.begin(), cell.end());
             continue;
         }
@@ -187,8 +192,8 @@ ClippedVoronoi clip(const VoronoiDiagram& d, std::span<const Point2> points, con
                 }
             }
             if (ref == 0xffffffffu) {
-                const auto [it, fresh] = added_index.emplace(std::pair{c.x, c.y},
-                                                             static_cast<std::uint32_t>(added_points.size()));
+                const auto [it, fresh] = added_index.emplace(
+                    std::pair{c.x, c.y}, static_cast<std::uint32_t>(added_points.size()));
                 if (fresh) {
                     added_points.push_back({round_rational(c.x), round_rational(c.y)});
                     added_sites.emplace_back();
@@ -232,7 +237,8 @@ ClippedVoronoi clip(const VoronoiDiagram& d, std::span<const Point2> points, con
     }
     r.unbounded = d.unbounded;
     for (std::size_t i = 0; i < n; ++i) {
-        for (const std::uint32_t ref : cell_of_site[t.vertex_of_input[i]]) r.cell_vertices.push_back(new_index[ref]);
+        for (const std::uint32_t ref : cell_of_site[t.vertex_of_input[i]])
+            r.cell_vertices.push_back(new_index[ref]);
         r.cell_offsets.push_back(static_cast<std::uint32_t>(r.cell_vertices.size()));
     }
     return r;

@@ -47,8 +47,9 @@ public:
         return i_ < s_.size() ? s_[i_] : '\0';
     }
     void expect(char c, std::string_view context) {
-        if (peek() != c) fail("expected '" + std::string(1, c) + "' " + std::string(context) +
-                              ", found " + found());
+        if (peek() != c)
+            fail("expected '" + std::string(1, c) + "' " + std::string(context) + ", found " +
+                 found());
         ++i_;
     }
     /// Consumes `c` if it is next.

@@ -53,9 +53,9 @@ ParsedNumber parse_double(std::string_view text) {
         return {std::nullopt, quoted(text) + " is not a number"};
     }
     double v = 0;
-    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v,
-                                           hex ? std::chars_format::hex
-                                               : std::chars_format::general);
+    const auto [end, ec] =
+        std::from_chars(s.data(), s.data() + s.size(), v,
+                        hex ? std::chars_format::hex : std::chars_format::general);
     if (ec == std::errc::invalid_argument) return {std::nullopt, quoted(text) + " is not a number"};
     if (end != s.data() + s.size()) {
         return {std::nullopt, quoted(text) + " is not a number (trailing characters " +

@@ -111,8 +111,8 @@ std::size_t column_index(const std::string& column, std::span<const std::string_
     if (found == header.end()) {
         std::string names;
         for (const std::string_view h : header) names += (names.empty() ? "" : ", ") + quoted(h);
-        throw ReadError::at_line(line, "no column named " + quoted(column) +
-                                           " in the first line (" + names + ")");
+        throw ReadError::at_line(
+            line, "no column named " + quoted(column) + " in the first line (" + names + ")");
     }
     if (std::find(found + 1, header.end(), column) != header.end()) {
         throw ReadError::at_line(line, "the header names " + quoted(column) + " twice");
@@ -139,14 +139,12 @@ std::size_t parse_xy_lines(std::string_view data, const XyLayout& layout, Point2
         if (fields.empty()) return;
         if (fields.size() != layout.width) {
             throw ReadError::at_line(
-                number, layout.columns ? "expected " + std::to_string(layout.width) +
-                                             " fields, as on the first line, got " +
-                                             std::to_string(fields.size())
-                                       : "expected 2 coordinates (x y), got " +
-                                             std::to_string(fields.size()) +
-                                             (fields.size() > 2
-                                                  ? " fields (pick two with --columns X,Y)"
-                                                  : ""));
+                number,
+                layout.columns
+                    ? "expected " + std::to_string(layout.width) +
+                          " fields, as on the first line, got " + std::to_string(fields.size())
+                    : "expected 2 coordinates (x y), got " + std::to_string(fields.size()) +
+                          (fields.size() > 2 ? " fields (pick two with --columns X,Y)" : ""));
         }
         out[written++] = {coordinate(number, fields[layout.ix], "x"),
                           coordinate(number, fields[layout.iy], "y")};
@@ -210,7 +208,8 @@ std::vector<Point2> parse_xy(std::string_view data, const std::optional<Columns>
     // more than parsing the 80 characters that fill it; docs/measurements.md), then the
     // parts' points moved together.
     constexpr std::size_t min_part = 1 << 20;
-    const std::size_t parts = std::clamp<std::size_t>(rest.size() / min_part, 1, std::max(threads, 1u));
+    const std::size_t parts =
+        std::clamp<std::size_t>(rest.size() / min_part, 1, std::max(threads, 1u));
     std::vector<std::size_t> cut(parts + 1, rest.size());
     cut[0] = 0;
     for (std::size_t p = 1; p < parts; ++p) {
@@ -284,8 +283,8 @@ long long node_integer(std::size_t line, std::string_view field, const std::stri
     if (v < lo || v > hi) {
         throw ReadError::at_line(line, what + " " + std::to_string(v) +
                                            (lo == hi ? ", expected " + std::to_string(lo)
-                                                     : " is outside [" + std::to_string(lo) +
-                                                           ", " + std::to_string(hi) + "]"));
+                                                     : " is outside [" + std::to_string(lo) + ", " +
+                                                           std::to_string(hi) + "]"));
     }
     return v;
 }
@@ -303,9 +302,10 @@ PointFile parse_node(std::string_view data) {
         if (fields.empty()) return;
         if (!have_header) {
             if (fields.size() > 4) {
-                throw ReadError::at_line(number, "the header is \"vertices [dimension "
-                                                 "[attributes [markers]]]\", got " +
-                                                     std::to_string(fields.size()) + " fields");
+                throw ReadError::at_line(number,
+                                         "the header is \"vertices [dimension "
+                                         "[attributes [markers]]]\", got " +
+                                             std::to_string(fields.size()) + " fields");
             }
             expected = node_integer(number, fields[0], "number of vertices", 0, max_count);
             if (fields.size() > 1) node_integer(number, fields[1], "dimension", 2, 2);
@@ -321,9 +321,9 @@ PointFile parse_node(std::string_view data) {
         }
         const auto k = static_cast<long long>(points.size());
         if (k == expected) {
-            throw ReadError::at_line(number, "more vertex lines than the " +
-                                                 std::to_string(expected) +
-                                                 " the header announces");
+            throw ReadError::at_line(
+                number,
+                "more vertex lines than the " + std::to_string(expected) + " the header announces");
         }
         const auto want = static_cast<std::size_t>(3 + attributes + markers);
         if (fields.size() != want) {
@@ -348,9 +348,9 @@ PointFile parse_node(std::string_view data) {
     });
     if (have_header && static_cast<long long>(points.size()) != expected) {
         throw ReadError::at_line(std::max<std::size_t>(lines, 1),
-                                 "truncated: the file ends after " +
-                                     std::to_string(points.size()) + " of the " +
-                                     std::to_string(expected) + " vertices the header announces");
+                                 "truncated: the file ends after " + std::to_string(points.size()) +
+                                     " of the " + std::to_string(expected) +
+                                     " vertices the header announces");
     }
     file.index_base = static_cast<unsigned>(first_index);
     return file;
@@ -378,9 +378,9 @@ std::vector<Point2> parse_f64(std::string_view data) {
         std::memcpy(&bits, data.data() + offset, 8);
         const double v = std::bit_cast<double>(little_endian(bits));
         if (!std::isfinite(v)) {
-            throw ReadError::at_byte(offset, std::string(offset % 16 ? "y" : "x") +
-                                                 " of point " + std::to_string(offset / 16) +
-                                                 " is " + (std::isnan(v) ? "NaN" : "infinite"));
+            throw ReadError::at_byte(offset, std::string(offset % 16 ? "y" : "x") + " of point " +
+                                                 std::to_string(offset / 16) + " is " +
+                                                 (std::isnan(v) ? "NaN" : "infinite"));
         }
         Point2& p = points[offset / 16];
         (offset % 16 ? p.y : p.x) = v;
@@ -418,7 +418,8 @@ std::string_view to_string(PointFormat f) noexcept {
 }
 
 std::optional<PointFormat> point_format_from_name(std::string_view name) {
-    for (PointFormat f : {PointFormat::xy, PointFormat::json, PointFormat::node, PointFormat::f64}) {
+    for (PointFormat f :
+         {PointFormat::xy, PointFormat::json, PointFormat::node, PointFormat::f64}) {
         if (to_string(f) == name) return f;
     }
     return std::nullopt;
@@ -564,7 +565,8 @@ void write_points(std::ostream& out, std::span<const Point2> points, PointFormat
         w.number(static_cast<std::uint64_t>(points.size())).text(" 2 0 0\n");
     }
     for (std::size_t i = 0; i < points.size(); ++i) {
-        if (format == PointFormat::node) w.number(static_cast<std::uint64_t>(i) + index_base).text(" ");
+        if (format == PointFormat::node)
+            w.number(static_cast<std::uint64_t>(i) + index_base).text(" ");
         w.number(points[i].x).text(" ").number(points[i].y).text("\n");
     }
 }

@@ -10,10 +10,11 @@
 
 namespace exidel::io::detail {
 
-
 // Called for every character of a text file: comparisons, not blanks.find(c) (a memchr
 // call per character was 40% of parsing an xy file).
-inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+inline bool is_blank(char c) {
+    return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+}
 
 /// Calls f(line_number, line) for every line of `data` (split at '\n', a trailing '\r'
 /// removed, line numbers from 1). A final line without '\n' counts; an empty tail does not.
@@ -63,8 +64,8 @@ public:
     /// `v` with `digits` digits after the point (for pictures, not for reading back).
     NumberWriter& fixed(double v, int digits) {
         if (capacity - used_ < 400) flush();  // room for any fixed-format double
-        const auto r = std::to_chars(buf_ + used_, buf_ + capacity, v, std::chars_format::fixed,
-                                     digits);
+        const auto r =
+            std::to_chars(buf_ + used_, buf_ + capacity, v, std::chars_format::fixed, digits);
         used_ = static_cast<std::size_t>(r.ptr - buf_);
         return *this;
     }
@@ -91,8 +92,9 @@ private:
 /// (the viewBox starts at -margin, -margin), up to and including the closing '>' of the
 /// <svg> tag and a newline; the caller writes the content and "</svg>".
 inline void svg_header(NumberWriter& w, double width, double height, double margin) {
-    w.text("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-           "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"")
+    w.text(
+         "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+         "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"")
         .fixed(-margin, 0)
         .text(" ")
         .fixed(-margin, 0)

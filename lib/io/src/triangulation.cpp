@@ -28,7 +28,8 @@ using detail::NumberWriter;
 // of the whole array) into `text`, which has room for 12 characters per number
 // ("-2147483648," or "4294967295," at most); returns the length.
 template <class T>
-std::size_t format_integers(const std::vector<T>& v, std::size_t begin, std::size_t end, char* text) {
+std::size_t format_integers(const std::vector<T>& v, std::size_t begin, std::size_t end,
+                            char* text) {
     char* p = text;
     for (std::size_t i = begin; i < end; ++i) {
         if (i) *p++ = ',';
@@ -150,8 +151,9 @@ void write_svg(std::ostream& out, std::span<const Point2> points, const Triangul
         .text(" hull vertices -->\n");
     // Each group's style is set once; its paths carry only their data.
     if (tri.triangle_count() > 0) {
-        w.text("<g fill=\"#dde6f3\" stroke=\"#3b5b92\" stroke-width=\"0.5\" "
-               "stroke-linejoin=\"round\">\n");
+        w.text(
+            "<g fill=\"#dde6f3\" stroke=\"#3b5b92\" stroke-width=\"0.5\" "
+            "stroke-linejoin=\"round\">\n");
         for (std::size_t t = 0; t < tri.triangle_count(); ++t) {
             const bool first = t % svg_path_items == 0;
             if (first) w.text(t ? "\"/>\n<path d=\"" : "<path d=\"");
@@ -165,8 +167,9 @@ void write_svg(std::ostream& out, std::span<const Point2> points, const Triangul
     if (!tri.hull.empty()) {
         // A triangulated hull is a closed cycle; a collinear "hull" is an open chain. In
         // pieces of svg_path_items edges, each starting where the previous one ended.
-        w.text("<g fill=\"none\" stroke=\"#c0392b\" stroke-width=\"2\" "
-               "stroke-linejoin=\"round\" stroke-linecap=\"round\">\n<path d=\"");
+        w.text(
+            "<g fill=\"none\" stroke=\"#c0392b\" stroke-width=\"2\" "
+            "stroke-linejoin=\"round\" stroke-linecap=\"round\">\n<path d=\"");
         const std::size_t h = tri.hull.size();
         const std::size_t vertices = tri.collinear ? h : h + 1;  // the cycle returns to the start
         const bool one_cycle = !tri.collinear && h <= svg_path_items;  // closed by Z instead
@@ -219,58 +222,58 @@ Triangulation parse_ele(std::string_view text, std::size_t point_count) {
         const auto r = std::from_chars(field.data(), field.data() + field.size(), v);
         if (r.ec != std::errc{} || r.ptr != field.data() + field.size() || v < lo || v > hi) {
             throw ReadError::at_line(line, std::string(what) + ": " + quoted(field) +
-                                               " is not a whole number in [" +
-                                               std::to_string(lo) + ", " + std::to_string(hi) +
-                                               "]");
+                                               " is not a whole number in [" + std::to_string(lo) +
+                                               ", " + std::to_string(hi) + "]");
         }
         return static_cast<std::size_t>(v);
     };
     std::vector<std::string_view> fields;
-    const std::size_t lines = detail::for_each_line(text, [&](std::size_t number,
-                                                              std::string_view line) {
-        fields.clear();
-        const std::string_view content = detail::strip_comment(line);
-        for (std::size_t i = 0; i < content.size();) {
-            while (i < content.size() && detail::is_blank(content[i])) ++i;
-            const std::size_t start = i;
-            while (i < content.size() && !detail::is_blank(content[i])) ++i;
-            if (i > start) fields.push_back(content.substr(start, i - start));
-        }
-        if (fields.empty()) return;
-        if (!have_header) {
-            if (fields.size() < 2 || fields.size() > 3) {
-                throw ReadError::at_line(number, "the header is \"triangles 3 [attributes]\"");
+    const std::size_t lines =
+        detail::for_each_line(text, [&](std::size_t number, std::string_view line) {
+            fields.clear();
+            const std::string_view content = detail::strip_comment(line);
+            for (std::size_t i = 0; i < content.size();) {
+                while (i < content.size() && detail::is_blank(content[i])) ++i;
+                const std::size_t start = i;
+                while (i < content.size() && !detail::is_blank(content[i])) ++i;
+                if (i > start) fields.push_back(content.substr(start, i - start));
             }
-            expected = integer(number, fields[0], "number of triangles", 0, 0x7fffffff / 3);
-            integer(number, fields[1], "nodes per triangle (only 3 is supported)", 3, 3);
-            if (fields.size() == 3) attributes = integer(number, fields[2], "attributes", 0, 1 << 20);
-            have_header = true;
-            tri.triangles.reserve(3 * std::min(expected, text.size() / 8));
-            return;
-        }
-        if (count == expected) {
-            throw ReadError::at_line(number, "more triangle lines than the " +
-                                                 std::to_string(expected) +
-                                                 " the header announces");
-        }
-        if (fields.size() != 4 + attributes) {
-            throw ReadError::at_line(number, "expected " + std::to_string(4 + attributes) +
-                                                 " fields (index v0 v1 v2" +
-                                                 (attributes ? " attributes" : "") + "), got " +
-                                                 std::to_string(fields.size()));
-        }
-        if (count == 0) {
-            base = integer(number, fields[0], "first triangle index", 0, 1);
-        } else {
-            integer(number, fields[0], "triangle index", base + count, base + count);
-        }
-        for (std::size_t k = 1; k <= 3; ++k) {
-            if (point_count == 0) throw ReadError::at_line(number, "a triangle, but no points");
-            tri.triangles.push_back(static_cast<std::uint32_t>(
-                integer(number, fields[k], "vertex", base, base + point_count - 1) - base));
-        }
-        ++count;
-    });
+            if (fields.empty()) return;
+            if (!have_header) {
+                if (fields.size() < 2 || fields.size() > 3) {
+                    throw ReadError::at_line(number, "the header is \"triangles 3 [attributes]\"");
+                }
+                expected = integer(number, fields[0], "number of triangles", 0, 0x7fffffff / 3);
+                integer(number, fields[1], "nodes per triangle (only 3 is supported)", 3, 3);
+                if (fields.size() == 3)
+                    attributes = integer(number, fields[2], "attributes", 0, 1 << 20);
+                have_header = true;
+                tri.triangles.reserve(3 * std::min(expected, text.size() / 8));
+                return;
+            }
+            if (count == expected) {
+                throw ReadError::at_line(number, "more triangle lines than the " +
+                                                     std::to_string(expected) +
+                                                     " the header announces");
+            }
+            if (fields.size() != 4 + attributes) {
+                throw ReadError::at_line(number, "expected " + std::to_string(4 + attributes) +
+                                                     " fields (index v0 v1 v2" +
+                                                     (attributes ? " attributes" : "") + "), got " +
+                                                     std::to_string(fields.size()));
+            }
+            if (count == 0) {
+                base = integer(number, fields[0], "first triangle index", 0, 1);
+            } else {
+                integer(number, fields[0], "triangle index", base + count, base + count);
+            }
+            for (std::size_t k = 1; k <= 3; ++k) {
+                if (point_count == 0) throw ReadError::at_line(number, "a triangle, but no points");
+                tri.triangles.push_back(static_cast<std::uint32_t>(
+                    integer(number, fields[k], "vertex", base, base + point_count - 1) - base));
+            }
+            ++count;
+        });
     if (!have_header) throw ReadError::at_line(1, "empty .ele file (no header)");
     if (count != expected) {
         throw ReadError::at_line(std::max<std::size_t>(lines, 1),
@@ -293,8 +296,9 @@ void link_halfedges(Triangulation& tri) {
     std::iota(order.begin(), order.end(), 0u);
     std::sort(order.begin(), order.end(), [&](auto a, auto b) { return key(a) < key(b); });
     const auto unique = [&](std::uint64_t k) -> std::int64_t {
-        const auto lo = std::lower_bound(order.begin(), order.end(), k,
-                                         [&](std::uint32_t e, std::uint64_t v) { return key(e) < v; });
+        const auto lo =
+            std::lower_bound(order.begin(), order.end(), k,
+                             [&](std::uint32_t e, std::uint64_t v) { return key(e) < v; });
         if (lo == order.end() || key(*lo) != k) return -1;
         if (lo + 1 != order.end() && key(*(lo + 1)) == k) return -1;
         return *lo;
@@ -452,7 +456,8 @@ delaunay::Triangulation read_triangulation(std::string_view text, TriangulationF
     if (!has_duplicates) {
         tri.duplicates.clear();
         for (std::size_t i = 0; i < points.size(); ++i) {
-            if (tri.vertex_of_input[i] != i) tri.duplicates.push_back(static_cast<std::uint32_t>(i));
+            if (tri.vertex_of_input[i] != i)
+                tri.duplicates.push_back(static_cast<std::uint32_t>(i));
         }
     }
     if (tri.collinear && format == TriangulationFormat::ele) {
@@ -463,7 +468,8 @@ delaunay::Triangulation read_triangulation(std::string_view text, TriangulationF
             if (tri.vertex_of_input[i] == i) chain.push_back(static_cast<std::uint32_t>(i));
         }
         std::sort(chain.begin(), chain.end(), [&](std::uint32_t a, std::uint32_t b) {
-            return points[a].x != points[b].x ? points[a].x < points[b].x : points[a].y < points[b].y;
+            return points[a].x != points[b].x ? points[a].x < points[b].x
+                                              : points[a].y < points[b].y;
         });
         tri.hull = std::move(chain);
     }

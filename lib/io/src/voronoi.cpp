@@ -203,7 +203,8 @@ std::vector<std::uint8_t> repeated_points(std::span<const Point2> points) {
     std::vector<std::uint32_t> order(points.size());
     std::iota(order.begin(), order.end(), 0u);
     const auto less = [&](std::uint32_t a, std::uint32_t b) {
-        return points[a].x < points[b].x || (points[a].x == points[b].x && points[a].y < points[b].y);
+        return points[a].x < points[b].x ||
+               (points[a].x == points[b].x && points[a].y < points[b].y);
     };
     std::stable_sort(order.begin(), order.end(), less);
     std::vector<std::uint8_t> repeated(points.size(), 0);
@@ -338,14 +339,16 @@ void write_svg(std::ostream& out, std::span<const Point2> points, const ClippedV
         g.rectangle(f({box.xmin, box.ymax}), f({box.xmax, box.ymin}));
     };
     // A clipped cell is a closed polygon.
-    draw(out, points, d, d.voronoi_vertex_count, f, [](std::size_t) { return true; }, frame,
-         repeated_points(points), inside);
+    draw(
+        out, points, d, d.voronoi_vertex_count, f, [](std::size_t) { return true; }, frame,
+        repeated_points(points), inside);
 }
 
 // ".json" -> "json"; empty when `path` has no extension.
 std::string_view extension(std::string_view path) {
     const std::size_t dot = path.rfind('.'), slash = path.rfind('/');
-    if (dot == std::string_view::npos || (slash != std::string_view::npos && dot < slash)) return {};
+    if (dot == std::string_view::npos || (slash != std::string_view::npos && dot < slash))
+        return {};
     return path.substr(dot + 1);
 }
 
@@ -371,8 +374,8 @@ void write_voronoi(std::ostream& out, std::span<const Point2> points, const Voro
     write_json(out, diagram);
 }
 
-void write_voronoi(std::ostream& out, std::span<const Point2> points,
-                   const ClippedVoronoi& diagram, const Box& box, VoronoiFormat format) {
+void write_voronoi(std::ostream& out, std::span<const Point2> points, const ClippedVoronoi& diagram,
+                   const Box& box, VoronoiFormat format) {
     if (format == VoronoiFormat::svg) return write_svg(out, points, diagram, box);
     write_json(out, diagram);
 }

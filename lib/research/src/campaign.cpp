@@ -89,7 +89,8 @@ std::optional<std::pair<Partial, std::uint64_t>> deserialize(std::istream& in, s
     std::string word;
     std::uint64_t resumed = 0;
     std::size_t n = 0;
-    if (!(in >> word >> resumed) || word != "resumed" || !(in >> word >> n) || word != "counts" || n != counts) {
+    if (!(in >> word >> resumed) || word != "resumed" || !(in >> word >> n) || word != "counts" ||
+        n != counts) {
         return std::nullopt;
     }
     p.counts.resize(n);
@@ -140,7 +141,8 @@ std::string checkpoint_problem(const Spec& spec) {
     if (!spec.resume) {
         if (exists) {
             return "the checkpoint directory '" + dir.string() +
-                   "' holds an unfinished campaign: --resume continues it; remove the directory to start afresh";
+                   "' holds an unfinished campaign: --resume continues it; remove the directory to "
+                   "start afresh";
         }
         return {};
     }
@@ -150,10 +152,9 @@ std::string checkpoint_problem(const Spec& spec) {
     // Name the first line that differs.
     std::istringstream a(theirs), b(spec.identity);
     std::string la, lb;
-    while (std::getline(a, la) && std::getline(b, lb) && la == lb) {
-    }
-    return "--resume: the checkpoint in '" + dir.string() + "' is of another campaign (it has '" + la +
-           "', this run has '" + lb + "')";
+    while (std::getline(a, la) && std::getline(b, lb) && la == lb) {}
+    return "--resume: the checkpoint in '" + dir.string() + "' is of another campaign (it has '" +
+           la + "', this run has '" + lb + "')";
 }
 
 // ---------------------------------------------------------------------------------
@@ -179,7 +180,8 @@ std::pair<Partial, std::uint64_t> run_rank(const Spec& spec, Team& team) {
     std::uint64_t resumed = 0;
     std::vector<std::uint64_t> pending;
     const Layout& layout = spec.layout;
-    for (std::uint64_t s = std::uint64_t(team.rank()); s < layout.stripes; s += std::uint64_t(team.size())) {
+    for (std::uint64_t s = std::uint64_t(team.rank()); s < layout.stripes;
+         s += std::uint64_t(team.size())) {
         if (spec.resume) {
             std::ifstream in(stripe_path(spec.checkpoint, s), std::ios::binary);
             if (in) {
@@ -197,7 +199,8 @@ std::pair<Partial, std::uint64_t> run_rank(const Spec& spec, Team& team) {
     Progress progress(spec.label, work, spec.progress && team.rank() == 0);
     for (std::uint64_t s : pending) {
         const Partial p = run_stripe(spec, s, progress);
-        if (!spec.checkpoint.empty()) write_atomically(stripe_path(spec.checkpoint, s), serialize(p, 0));
+        if (!spec.checkpoint.empty())
+            write_atomically(stripe_path(spec.checkpoint, s), serialize(p, 0));
         mine.add(p, spec.max_findings);
     }
     return {std::move(mine), resumed};
@@ -211,7 +214,8 @@ Outcome run(const Spec& spec, Team& team) {
     // rank cannot go on (the others would otherwise wait for it forever).
     const std::string problem = spec.checkpoint.empty() ? std::string() : checkpoint_problem(spec);
     if (team.max(problem.empty() ? 0.0 : 1.0) != 0.0) {
-        throw std::invalid_argument(problem.empty() ? "another rank refused the checkpoint" : problem);
+        throw std::invalid_argument(problem.empty() ? "another rank refused the checkpoint"
+                                                    : problem);
     }
     if (!spec.checkpoint.empty()) {
         if (team.rank() == 0 && !spec.resume) {
@@ -224,7 +228,8 @@ Outcome run(const Spec& spec, Team& team) {
     auto [mine, resumed] = run_rank(spec, team);
     const std::vector<std::string> parts = team.gather(serialize(mine, resumed));
     Outcome outcome;
-    outcome.seconds = team.max(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    outcome.seconds =
+        team.max(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     if (team.rank() != 0) return outcome;
     outcome.all.counts.resize(spec.counts);
     for (const std::string& part : parts) {

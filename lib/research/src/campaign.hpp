@@ -94,8 +94,9 @@ Spec spec_from(const Options& o) {
 /// time and how the run was split. `unit` names what the campaign counts ("queries",
 /// "triangulations"); the rate leaves out the units read back from a checkpoint.
 template <class Json>
-void close_summary(Json& j, std::size_t max_reports, const std::string& commit, double seconds, int ranks,
-                   unsigned jobs, const std::string& unit, std::uint64_t units, std::uint64_t resumed) {
+void close_summary(Json& j, std::size_t max_reports, const std::string& commit, double seconds,
+                   int ranks, unsigned jobs, const std::string& unit, std::uint64_t units,
+                   std::uint64_t resumed) {
     j["max_reports"] = max_reports;
     j["exidel"] = commit;
     j["seconds"] = seconds;
@@ -106,9 +107,9 @@ void close_summary(Json& j, std::size_t max_reports, const std::string& commit, 
 }
 
 struct Outcome {
-    Partial all;                  ///< rank 0: every rank's; other ranks: empty
-    std::uint64_t resumed = 0;    ///< units read back from the checkpoint
-    double seconds = 0;           ///< wall time of the slowest rank
+    Partial all;                ///< rank 0: every rank's; other ranks: empty
+    std::uint64_t resumed = 0;  ///< units read back from the checkpoint
+    double seconds = 0;         ///< wall time of the slowest rank
 };
 
 /// Runs the campaign (every rank of `team` with the same spec). Throws

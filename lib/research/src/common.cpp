@@ -108,8 +108,8 @@ void Progress::draw(std::size_t done) {
             std::snprintf(eta, sizeof eta, "%llds", left);
         }
     }
-    std::fprintf(stderr, "\r%s [%s] %zu/%zu  %.3g/s  %.0f s, %s left   ", label_.c_str(), bar.c_str(), done,
-                 total_, rate, elapsed, eta);
+    std::fprintf(stderr, "\r%s [%s] %zu/%zu  %.3g/s  %.0f s, %s left   ", label_.c_str(),
+                 bar.c_str(), done, total_, rate, elapsed, eta);
     std::fflush(stderr);
     drawn_ = true;
 }
@@ -185,10 +185,13 @@ std::string Report::render(std::string_view prefix, int level, bool embedded) co
         if (embedded && b.standalone) continue;
         switch (b.kind) {
             case Kind::heading:
-                s << std::string(static_cast<std::size_t>(level + 1), '#') << ' ' << b.text << "\n\n";
+                s << std::string(static_cast<std::size_t>(level + 1), '#') << ' ' << b.text
+                  << "\n\n";
                 break;
             case Kind::paragraph: s << b.text << "\n\n"; break;
-            case Kind::code: s << "```\n" << b.text << (b.text.ends_with('\n') ? "" : "\n") << "```\n\n"; break;
+            case Kind::code:
+                s << "```\n" << b.text << (b.text.ends_with('\n') ? "" : "\n") << "```\n\n";
+                break;
             case Kind::table: s << b.text << '\n'; break;
             case Kind::image: s << "![" << b.text << "](" << prefix << b.path << ")\n\n"; break;
             case Kind::link: s << "[" << b.text << "](" << prefix << b.path << ")\n\n"; break;
@@ -218,7 +221,8 @@ Report run_header(const RunOptions& run) {
     if (run.command.empty()) {
         r.paragraph(std::string(rerun_prefix.substr(0, rerun_prefix.size() - 1)) +
                     "this report was produced through the library API (exidel::research), "
-                    "not by the exidel command; seed " + std::to_string(run.seed) + ".");
+                    "not by the exidel command; seed " +
+                    std::to_string(run.seed) + ".");
     } else {
         r.paragraph(std::string(rerun_prefix) + run.command + "`");
         r.standalone_paragraph(
@@ -241,11 +245,14 @@ Report run_header(const RunOptions& run) {
     };
     t.rows = {
         {"exidel", std::string(b.version) + ", commit " + code(b.commit)},
-        {"compiler", std::string(b.compiler) + (b.build_type.empty() ? "" : ", " + std::string(b.build_type) + " build")},
+        {"compiler", std::string(b.compiler) +
+                         (b.build_type.empty() ? "" : ", " + std::string(b.build_type) + " build")},
         {"library flags", code(b.cxx_flags)},
-        {"GMP / MPFR / Boost", std::string(b.gmp) + " / " + std::string(b.mpfr) + " / " + std::string(b.boost)},
+        {"GMP / MPFR / Boost",
+         std::string(b.gmp) + " / " + std::string(b.mpfr) + " / " + std::string(b.boost)},
         {"CPU", cpu_model()},
-        {"long double", std::string(b.long_double) + ": the long-double kernel's results depend on it"},
+        {"long double",
+         std::string(b.long_double) + ": the long-double kernel's results depend on it"},
         {"kernels", kernels},
     };
     r.standalone_table(t);
@@ -259,8 +266,8 @@ std::string timing_line(double seconds, const RunOptions& run) {
     char date[32];
     std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", &utc);
     char buf[160];
-    std::snprintf(buf, sizeof buf, "%.1f s wall-clock with %u thread%s, finished %s.", seconds, run.jobs,
-                  run.jobs == 1 ? "" : "s", date);
+    std::snprintf(buf, sizeof buf, "%.1f s wall-clock with %u thread%s, finished %s.", seconds,
+                  run.jobs, run.jobs == 1 ? "" : "s", date);
     return std::string(timing_prefix) + buf;
 }
 

@@ -52,9 +52,10 @@ FailureMapSpec circle(Formulation f, int s, std::size_t pivot, std::string name)
     spec.order = {0, 1, 2, 3};
     spec.centered = true;
     const char* letters = "abcd";
-    spec.description = std::string(predicate_name(f)) + "(a, b, c, d) for four exactly cocircular points " +
-                       "(radius 5 * 2^-" + std::to_string(s) + " around (2, 2)); " +
-                       letters[pivot] + " moved over [-128, 128)^2 ulp steps" +
+    spec.description = std::string(predicate_name(f)) +
+                       "(a, b, c, d) for four exactly cocircular points " + "(radius 5 * 2^-" +
+                       std::to_string(s) + " around (2, 2)); " + letters[pivot] +
+                       " moved over [-128, 128)^2 ulp steps" +
                        (f == Formulation::incircle ? "; the formula subtracts d"
                                                    : "; the formula subtracts c and d");
     return spec;
@@ -84,8 +85,8 @@ std::vector<Point3> lattice_sphere(int s) {
     return {at(3, 0, 0), at(0, 3, 0), at(0, 0, 3), at(-1, -2, -2), at(-2, 2, -1)};
 }
 
-FailureMapSpec space_map(SpacePredicate p, std::vector<Point3> points, std::size_t pivot, std::string name,
-                         std::string what) {
+FailureMapSpec space_map(SpacePredicate p, std::vector<Point3> points, std::size_t pivot,
+                         std::string name, std::string what) {
     FailureMapSpec spec;
     spec.name = std::move(name);
     spec.space = p;
@@ -96,8 +97,10 @@ FailureMapSpec space_map(SpacePredicate p, std::vector<Point3> points, std::size
     spec.centered = true;
     const std::string letters = "abcde";
     std::string args;
-    for (std::size_t i = 0; i < spec.points3.size(); ++i) args += (i ? ", " : "") + letters.substr(i, 1);
-    spec.description = std::string(predicate_name(p)) + "(" + args + ") for " + what + "; " + letters[pivot] +
+    for (std::size_t i = 0; i < spec.points3.size(); ++i)
+        args += (i ? ", " : "") + letters.substr(i, 1);
+    spec.description = std::string(predicate_name(p)) + "(" + args + ") for " + what + "; " +
+                       letters[pivot] +
                        " moved in x and y over [-128, 128)^2 ulp steps; the formula subtracts " +
                        letters[spec.points3.size() - 1];
     return spec;
@@ -113,7 +116,8 @@ Rgb colour(Sign s) {
 }
 
 Rgb faded(Rgb c) {
-    return {static_cast<std::uint8_t>((c.r + 3 * 255) / 4), static_cast<std::uint8_t>((c.g + 3 * 255) / 4),
+    return {static_cast<std::uint8_t>((c.r + 3 * 255) / 4),
+            static_cast<std::uint8_t>((c.g + 3 * 255) / 4),
             static_cast<std::uint8_t>((c.b + 3 * 255) / 4)};
 }
 
@@ -126,10 +130,8 @@ std::string counts_text(const SignCounts& c) {
 
 std::vector<FailureMapSpec> failure_map_presets() {
     std::vector<FailureMapSpec> v{
-        kettner(0, {0, 1, 2}, "kettner1"),
-        kettner(1, {0, 1, 2}, "kettner2"),
-        kettner(2, {0, 1, 2}, "kettner3"),
-        kettner(0, {1, 2, 0}, "kettner1-pivot-q"),
+        kettner(0, {0, 1, 2}, "kettner1"),         kettner(1, {0, 1, 2}, "kettner2"),
+        kettner(2, {0, 1, 2}, "kettner3"),         kettner(0, {1, 2, 0}, "kettner1-pivot-q"),
         kettner(0, {2, 0, 1}, "kettner1-pivot-r"),
     };
     for (int s : {2, 12, 24}) {
@@ -139,15 +141,19 @@ std::vector<FailureMapSpec> failure_map_presets() {
     for (int s : {2, 12, 24}) {
         v.push_back(circle(Formulation::incircle_cosine, s, 3, "cosine-s" + std::to_string(s)));
     }
-    const std::string diagonal = "four exactly coplanar points on the plane x = y (Kettner's first line lifted)",
-                      tilted = "four exactly coplanar points on the plane x + y + z = 3/2";
-    v.push_back(space_map(SpacePredicate::orient3d, coplanar(false), 3, "orient3d-diagonal", diagonal));
+    const std::string
+        diagonal = "four exactly coplanar points on the plane x = y (Kettner's first line lifted)",
+        tilted = "four exactly coplanar points on the plane x + y + z = 3/2";
+    v.push_back(
+        space_map(SpacePredicate::orient3d, coplanar(false), 3, "orient3d-diagonal", diagonal));
     v.push_back(space_map(SpacePredicate::orient3d, coplanar(true), 3, "orient3d-tilted", tilted));
-    v.push_back(space_map(SpacePredicate::orient3d, coplanar(true), 0, "orient3d-tilted-move-a", tilted));
+    v.push_back(
+        space_map(SpacePredicate::orient3d, coplanar(true), 0, "orient3d-tilted-move-a", tilted));
     for (int s : {2, 12, 24}) {
-        v.push_back(space_map(SpacePredicate::insphere, lattice_sphere(s), 4, "insphere-s" + std::to_string(s),
-                              "five exactly cospherical points (radius 3 * 2^-" + std::to_string(s) +
-                                  " around (2, 2, 2))"));
+        v.push_back(space_map(SpacePredicate::insphere, lattice_sphere(s), 4,
+                              "insphere-s" + std::to_string(s),
+                              "five exactly cospherical points (radius 3 * 2^-" +
+                                  std::to_string(s) + " around (2, 2, 2))"));
     }
     v.push_back(space_map(SpacePredicate::insphere, lattice_sphere(12), 0, "insphere-s12-move-a",
                           "five exactly cospherical points (radius 3 * 2^-12 around (2, 2, 2))"));
@@ -172,17 +178,21 @@ void validate(const FailureMapSpec& s) {
                                     " points, got " + std::to_string(given));
     }
     for (const Point2& p : s.points) {
-        if (!std::isfinite(p.x) || !std::isfinite(p.y)) throw std::invalid_argument("failure map points must be finite");
+        if (!std::isfinite(p.x) || !std::isfinite(p.y))
+            throw std::invalid_argument("failure map points must be finite");
     }
     for (const Point3& p : s.points3) {
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
             throw std::invalid_argument("failure map points must be finite");
         }
     }
-    if (s.space && (s.axes[0] < 0 || s.axes[0] > 2 || s.axes[1] < 0 || s.axes[1] > 2 || s.axes[0] == s.axes[1])) {
-        throw std::invalid_argument("the moving point's axes must be two different ones of x, y, z");
+    if (s.space && (s.axes[0] < 0 || s.axes[0] > 2 || s.axes[1] < 0 || s.axes[1] > 2 ||
+                    s.axes[0] == s.axes[1])) {
+        throw std::invalid_argument(
+            "the moving point's axes must be two different ones of x, y, z");
     }
-    if (s.pivot >= n) throw std::invalid_argument("the moving point index must be below " + std::to_string(n));
+    if (s.pivot >= n)
+        throw std::invalid_argument("the moving point index must be below " + std::to_string(n));
     std::vector<std::size_t> sorted = s.order;
     std::sort(sorted.begin(), sorted.end());
     std::vector<std::size_t> identity(n);
@@ -205,14 +215,16 @@ FailureMap compute_failure_map(const FailureMapSpec& spec, const Kernel& kernel,
     FailureMap m;
     m.spec = spec;
     m.kernel = kernel_name(kernel);
-    const std::size_t W = static_cast<std::size_t>(spec.width), H = static_cast<std::size_t>(spec.height);
+    const std::size_t W = static_cast<std::size_t>(spec.width),
+                      H = static_cast<std::size_t>(spec.height);
     // Coordinates of the moving point per column and per row, computed once (nudge walks
     // one ulp at a time). A plane map moves x and y; a space map its two axes.
     Point3 moved3 = spec.space ? spec.points3[spec.pivot] : Point3{};
     const double base_x = spec.space ? coordinate(moved3, spec.axes[0]) : spec.points[spec.pivot].x;
     const double base_y = spec.space ? coordinate(moved3, spec.axes[1]) : spec.points[spec.pivot].y;
     const auto offset = [&](std::size_t i, std::size_t size) {
-        const auto k = static_cast<std::int64_t>(i) - (spec.centered ? static_cast<std::int64_t>(size / 2) : 0);
+        const auto k = static_cast<std::int64_t>(i) -
+                       (spec.centered ? static_cast<std::int64_t>(size / 2) : 0);
         return k * spec.step;
     };
     std::vector<double> xs(W), ys(H);
@@ -231,7 +243,8 @@ FailureMap compute_failure_map(const FailureMapSpec& spec, const Kernel& kernel,
                 coordinate(pts[spec.pivot], spec.axes[1]) = ys[j];
                 for (std::size_t a = 0; a < n; ++a) args[a] = pts[spec.order[a]];
                 const std::span<const Point3> q(args.data(), n);
-                m.signs[j * W + i] = std::visit([&](const auto& k) { return evaluate(k, *spec.space, q); }, kernel);
+                m.signs[j * W + i] =
+                    std::visit([&](const auto& k) { return evaluate(k, *spec.space, q); }, kernel);
                 m.exact[j * W + i] = evaluate(GmpExactKernel{}, *spec.space, q);
             }
             return;
@@ -242,7 +255,8 @@ FailureMap compute_failure_map(const FailureMapSpec& spec, const Kernel& kernel,
             pts[spec.pivot] = {xs[i], ys[j]};
             for (std::size_t a = 0; a < n; ++a) args[a] = pts[spec.order[a]];
             const std::span<const Point2> q(args.data(), n);
-            m.signs[j * W + i] = std::visit([&](const auto& k) { return evaluate(k, spec.formulation, q); }, kernel);
+            m.signs[j * W + i] =
+                std::visit([&](const auto& k) { return evaluate(k, spec.formulation, q); }, kernel);
             m.exact[j * W + i] = evaluate(GmpExactKernel{}, spec.formulation, q);
         }
     });
@@ -274,7 +288,9 @@ Image render_failure_map(const FailureMap& m) {
     const Rgb ink{0, 0, 0}, grey{90, 90, 90}, white{255, 255, 255};
     Image img(l.width, l.height, white);
     // Text at twice the font size where it fits, else at the font size.
-    const auto fitting = [](std::string_view text, int room) { return text_width(text, 2) <= room ? 2 : 1; };
+    const auto fitting = [](std::string_view text, int room) {
+        return text_width(text, 2) <= room ? 2 : 1;
+    };
     const int line = glyph_height * 2;
 
     // Title: what is evaluated, which point moves, and the kernel's score.
@@ -286,8 +302,9 @@ Image render_failure_map(const FailureMap& m) {
         args += (a ? ", " : "") + std::string(1, letters[m.spec.order[a]]);
     }
     const std::string title = m.spec.name + ": " + std::string(m.spec.predicate()) + "(" + args +
-                              ") as " + std::string(1, moved) + " moves, kernel " + m.kernel + ": " +
-                              std::to_string(m.wrong) + " of " + std::to_string(m.signs.size()) + " signs wrong";
+                              ") as " + std::string(1, moved) + " moves, kernel " + m.kernel +
+                              ": " + std::to_string(m.wrong) + " of " +
+                              std::to_string(m.signs.size()) + " signs wrong";
     draw_text(img, 8, 8, title, ink, fitting(title, l.width - 16));
 
     // Panels, with a caption each and a frame.
@@ -296,16 +313,19 @@ Image render_failure_map(const FailureMap& m) {
     for (int p = 0; p < 3; ++p) {
         const int ts = fitting(captions[p], l.panel_width);
         draw_text(img, l.panel_x[p], l.panel_y - 8 - glyph_height * ts, captions[p], ink, ts);
-        fill_rect(img, l.panel_x[p] - 1, l.panel_y - 1, l.panel_width + 2, l.panel_height + 2, grey);
+        fill_rect(img, l.panel_x[p] - 1, l.panel_y - 1, l.panel_width + 2, l.panel_height + 2,
+                  grey);
     }
     for (int j = 0; j < H; ++j) {
         for (int i = 0; i < W; ++i) {
             const std::size_t c = std::size_t(j) * std::size_t(W) + std::size_t(i);
             const Sign got = m.signs[c], want = m.exact[c];
-            const Rgb panels[3] = {colour(got), colour(want), got == want ? faded(colour(want)) : colour_wrong};
+            const Rgb panels[3] = {colour(got), colour(want),
+                                   got == want ? faded(colour(want)) : colour_wrong};
             for (int p = 0; p < 3; ++p) {
                 // y grows upward.
-                fill_rect(img, l.panel_x[p] + i * scale, l.panel_y + (H - 1 - j) * scale, scale, scale, panels[p]);
+                fill_rect(img, l.panel_x[p] + i * scale, l.panel_y + (H - 1 - j) * scale, scale,
+                          scale, panels[p]);
             }
         }
     }
@@ -326,22 +346,31 @@ Image render_failure_map(const FailureMap& m) {
             draw_text(img, x0 - text_width("0", ts) / 2, tick_y, "0", grey, ts);
         }
     }
-    const std::string unit = m.spec.step == 1 ? "ulps" : "ulps, steps of " + std::to_string(m.spec.step);
+    const std::string unit =
+        m.spec.step == 1 ? "ulps" : "ulps, steps of " + std::to_string(m.spec.step);
     // The coordinates that move: x and y, or a space map's two axes.
-    const char x_axis = m.spec.space ? "xyz"[m.spec.axes[0]] : 'x', y_axis = m.spec.space ? "xyz"[m.spec.axes[1]] : 'y';
-    const std::string x_label = "x: offset of " + std::string(1, moved) + "." + x_axis + " (" + unit + ")";
-    draw_text(img, l.panel_x[0] + (l.panel_x[2] + l.panel_width - l.panel_x[0] - text_width(x_label, ts)) / 2,
-              tick_y + line + 4, x_label, ink, ts);
+    const char x_axis = m.spec.space ? "xyz"[m.spec.axes[0]] : 'x',
+               y_axis = m.spec.space ? "xyz"[m.spec.axes[1]] : 'y';
+    const std::string x_label =
+        "x: offset of " + std::string(1, moved) + "." + x_axis + " (" + unit + ")";
+    draw_text(
+        img,
+        l.panel_x[0] + (l.panel_x[2] + l.panel_width - l.panel_x[0] - text_width(x_label, ts)) / 2,
+        tick_y + line + 4, x_label, ink, ts);
     const std::string y_lo = std::to_string(offset(0, H)), y_hi = std::to_string(offset(H - 1, H));
     draw_text(img, l.panel_x[0] - 6 - text_width(y_hi, ts), l.panel_y, y_hi, grey, ts);
-    draw_text(img, l.panel_x[0] - 6 - text_width(y_lo, ts), l.panel_y + l.panel_height - line, y_lo, grey, ts);
+    draw_text(img, l.panel_x[0] - 6 - text_width(y_lo, ts), l.panel_y + l.panel_height - line, y_lo,
+              grey, ts);
     if (m.spec.centered) {
-        draw_text(img, l.panel_x[0] - 6 - text_width("0", ts), l.panel_y + (H - 1 - H / 2) * scale - line / 2, "0",
-                  grey, ts);
+        draw_text(img, l.panel_x[0] - 6 - text_width("0", ts),
+                  l.panel_y + (H - 1 - H / 2) * scale - line / 2, "0", grey, ts);
     }
-    const std::string y_label = "y: offset of " + std::string(1, moved) + "." + y_axis + " (" + unit + ")";
-    draw_text_vertical(img, 8, l.panel_y + (l.panel_height + text_width(y_label, fitting(y_label, l.panel_height))) / 2,
-                       y_label, ink, fitting(y_label, l.panel_height));
+    const std::string y_label =
+        "y: offset of " + std::string(1, moved) + "." + y_axis + " (" + unit + ")";
+    draw_text_vertical(
+        img, 8,
+        l.panel_y + (l.panel_height + text_width(y_label, fitting(y_label, l.panel_height))) / 2,
+        y_label, ink, fitting(y_label, l.panel_height));
 
     // Legend: what each colour means.
     struct Entry {
@@ -374,8 +403,8 @@ FailureMapStudy run_failure_map_study(const FailureMapOptions& options, const Ru
             // The circle pair at s = 2, not 12: at s = 12 the double kernel gets the very
             // same cells wrong with both formulas (byte-identical maps, checked when this
             // list was chosen), so that pair showed nothing; at s = 2 they differ.
-            for (const char* name :
-                 {"kettner1", "kettner2", "kettner3", "incircle-s2", "cosine-s2", "orient3d-tilted", "insphere-s2"}) {
+            for (const char* name : {"kettner1", "kettner2", "kettner3", "incircle-s2", "cosine-s2",
+                                     "orient3d-tilted", "insphere-s2"}) {
                 specs.push_back(failure_map_preset(name));
             }
         } else {
@@ -397,8 +426,9 @@ FailureMapStudy run_failure_map_study(const FailureMapOptions& options, const Ru
     }
 
     FailureMapStudy study;
-    study.table.header = {"preset", "kernel", "predicate", "cells", "neg / zero / pos",
-                          "exact neg / zero / pos", "wrong", "wrong rate"};
+    study.table.header = {"preset", "kernel",           "predicate",
+                          "cells",  "neg / zero / pos", "exact neg / zero / pos",
+                          "wrong",  "wrong rate"};
     std::size_t rows_total = 0;
     for (const FailureMapSpec& s : specs) rows_total += std::size_t(s.height) * kernels.size();
     Progress progress("failure-map", rows_total, run.progress);
@@ -422,11 +452,14 @@ FailureMapStudy run_failure_map_study(const FailureMapOptions& options, const Ru
         // that picture. Such rows point to the picture that shows their map. (With no kernel
         // wrong anywhere in the preset, the first one is drawn, so the map is shown once.)
         std::vector<FailureMap> maps;
-        for (const Kernel& kernel : kernels) maps.push_back(compute_failure_map(spec, kernel, run.jobs, &progress));
-        const bool any_wrong = std::any_of(maps.begin(), maps.end(), [](const FailureMap& m) { return m.wrong > 0; });
+        for (const Kernel& kernel : kernels)
+            maps.push_back(compute_failure_map(spec, kernel, run.jobs, &progress));
+        const bool any_wrong =
+            std::any_of(maps.begin(), maps.end(), [](const FailureMap& m) { return m.wrong > 0; });
         constexpr std::size_t none = std::size_t(-1);
         std::vector<std::string> png(maps.size());
-        std::vector<std::size_t> shown_by(maps.size(), none);  // index of the kernel whose picture shows it
+        std::vector<std::size_t> shown_by(maps.size(),
+                                          none);  // index of the kernel whose picture shows it
         for (std::size_t k = 0; k < maps.size(); ++k) {
             if (maps[k].wrong == 0 && any_wrong) continue;
             for (std::size_t d = 0; d < k && shown_by[k] == none; ++d) {
@@ -440,7 +473,8 @@ FailureMapStudy run_failure_map_study(const FailureMapOptions& options, const Ru
         // Kernels without errors, in a preset where some kernel errs: the first picture's
         // middle panel is their map.
         const auto first = std::size_t(
-            std::find_if(png.begin(), png.end(), [](const std::string& f) { return !f.empty(); }) - png.begin());
+            std::find_if(png.begin(), png.end(), [](const std::string& f) { return !f.empty(); }) -
+            png.begin());
         for (std::size_t& by : shown_by) by = by == none ? first : by;
         for (std::size_t k = 0; k < maps.size(); ++k) {
             const FailureMap& m = maps[k];
@@ -453,13 +487,17 @@ FailureMapStudy run_failure_map_study(const FailureMapOptions& options, const Ru
             row.cells = m.signs.size();
             row.png = png[shown_by[k]];
             if (shown_by[k] == k) {
-                pictures.image(spec.name + ", " + m.kernel + ": " + std::to_string(m.wrong) + " wrong", row.png);
+                pictures.image(
+                    spec.name + ", " + m.kernel + ": " + std::to_string(m.wrong) + " wrong",
+                    row.png);
             } else if (maps[shown_by[k]].signs == m.signs) {
-                pictures.paragraph(m.kernel + ": every sign the same as " + maps[shown_by[k]].kernel + " (" +
-                                   std::to_string(m.wrong) + " wrong), so the same picture: " + row.png + ".");
+                pictures.paragraph(m.kernel + ": every sign the same as " +
+                                   maps[shown_by[k]].kernel + " (" + std::to_string(m.wrong) +
+                                   " wrong), so the same picture: " + row.png + ".");
             } else {
-                pictures.paragraph(m.kernel + ": no wrong sign; its map is the exact one, the middle panel of " +
-                                   row.png + ".");
+                pictures.paragraph(
+                    m.kernel + ": no wrong sign; its map is the exact one, the middle panel of " +
+                    row.png + ".");
             }
             study.table.rows.push_back({spec.name, m.kernel, std::string(spec.predicate()),
                                         std::to_string(row.cells), counts_text(m.counts),
@@ -477,8 +515,9 @@ FailureMapStudy run_failure_map_study(const FailureMapOptions& options, const Ru
         "zero; x grows to the right, y upward; each picture has its title, axis offsets in "
         "ulps and this legend drawn in. A kernel without a wrong cell is not drawn (its map is "
         "the exact one, the middle panel of the other pictures), nor one whose signs are all "
-        "those of a kernel already drawn for the same preset. Failure maps use no randomness (seed " + std::to_string(run.seed) +
-        " is recorded for uniformity).");
+        "those of a kernel already drawn for the same preset. Failure maps use no randomness "
+        "(seed " +
+        std::to_string(run.seed) + " is recorded for uniformity).");
     if (run.quick && options.specs.empty()) {
         study.report.paragraph(
             "The quick preset draws the two in-circle formulations on the circle scaled by 2^-2: "

@@ -55,7 +55,8 @@ struct Campaign {
 
     static PredicateFuzzOptions complete(PredicateFuzzOptions o) {
         if (o.families.empty()) {
-            for (const testing::FamilyInfo& f : testing::all_families()) o.families.push_back(f.family);
+            for (const testing::FamilyInfo& f : testing::all_families())
+                o.families.push_back(f.family);
         }
         if (o.predicates.empty()) o.predicates.assign(all_predicates.begin(), all_predicates.end());
         if (o.jobs == 0) o.jobs = 1;
@@ -64,12 +65,15 @@ struct Campaign {
 
     std::size_t family_count() const { return options.families.size(); }
     std::size_t predicate_count() const { return options.predicates.size(); }
-    std::size_t family_position(std::uint64_t block) const { return std::size_t(block % family_count()); }
+    std::size_t family_position(std::uint64_t block) const {
+        return std::size_t(block % family_count());
+    }
 
     /// The point set of block b: drawn under the RapidCheck lock (common.hpp says why).
     rc::Shrinkable<std::vector<Point2>> draw_set(std::uint64_t block) const {
         const rc::Random random(derive_seed(options.seed, {fuzz_predicates_id, block}));
-        return testing::gen_points(options.families[family_position(block)], fuzz_set_points)(random);
+        return testing::gen_points(options.families[family_position(block)],
+                                   fuzz_set_points)(random);
     }
 
     /// Query j of block b: its predicate, and distinct points chosen by its own stream.
@@ -81,8 +85,8 @@ struct Campaign {
             bool fresh = false;
             while (!fresh) {
                 q.index[i] = std::uint8_t(random.below(fuzz_set_points));  // < 16
-                fresh = std::find(q.index.begin(), q.index.begin() + std::ptrdiff_t(i), q.index[i]) ==
-                        q.index.begin() + std::ptrdiff_t(i);
+                fresh = std::find(q.index.begin(), q.index.begin() + std::ptrdiff_t(i),
+                                  q.index[i]) == q.index.begin() + std::ptrdiff_t(i);
             }
         }
         return q;
@@ -95,7 +99,8 @@ std::array<Point2, 4> make_query(const std::vector<Point2>& set, const QueryPlan
     for (std::size_t i = 0; i < point_count(plan.predicate); ++i) q[i] = set[plan.index[i]];
     // The adaptive kernel's orient2d is exact, and the cosine comparison below does not
     // depend on it: a wrong arrangement would only change which query is asked.
-    if (plan.predicate == Predicate::incircle_cosine) q = testing::arrange_for_cosine(q, AdaptiveKernel{});
+    if (plan.predicate == Predicate::incircle_cosine)
+        q = testing::arrange_for_cosine(q, AdaptiveKernel{});
     return q;
 }
 
@@ -118,7 +123,8 @@ void evaluate_columns(const Kernel& kernel, Predicate p, const Columns& c, std::
         switch (p) {
             case Predicate::orient2d: return batch::orient2d(a[0], a[1], a[2], out);
             case Predicate::incircle: return batch::incircle(a[0], a[1], a[2], a[3], out);
-            case Predicate::incircle_cosine: return batch::incircle_cosine(a[0], a[1], a[2], a[3], out);
+            case Predicate::incircle_cosine:
+                return batch::incircle_cosine(a[0], a[1], a[2], a[3], out);
             case Predicate::compare_distance: return batch::compare_distance(a[0], a[1], a[2], out);
         }
     }
@@ -135,8 +141,9 @@ void evaluate_columns(const Kernel& kernel, Predicate p, const Columns& c, std::
 
 /// One query through one kernel.
 Sign evaluate_one(const Kernel& kernel, Predicate p, const std::array<Point2, 4>& q) {
-    return std::visit([&](const auto& k) { return exidel::evaluate(k, p, std::span(q.data(), point_count(p))); },
-                      kernel);
+    return std::visit(
+        [&](const auto& k) { return exidel::evaluate(k, p, std::span(q.data(), point_count(p))); },
+        kernel);
 }
 
 /// Every query of block b. Counts: (queries, disagreements) per (family, predicate); a
@@ -169,7 +176,8 @@ Partial run_block(const Campaign& c, std::uint64_t block) {
         for (std::size_t i = 0; i < col.j.size(); ++i) {
             if (mine[i] == theirs[i]) continue;
             ++n[1];
-            result.findings.push_back({block * fuzz_block_queries + col.j[i], to_int(mine[i]), to_int(theirs[i])});
+            result.findings.push_back(
+                {block * fuzz_block_queries + col.j[i], to_int(mine[i]), to_int(theirs[i])});
         }
     }
     // The first ones in query order (the columns are per predicate).
@@ -268,8 +276,9 @@ PredicateFuzzResult fuzz_predicates(const PredicateFuzzOptions& options, Team& t
         result.total.disagreements += outcome.all.counts[i + 1];
     }
     if (result.total.queries != c.options.queries) {
-        throw std::runtime_error("fuzz: " + std::to_string(result.total.queries) + " queries were counted, " +
-                                 std::to_string(c.options.queries) + " asked for");
+        throw std::runtime_error("fuzz: " + std::to_string(result.total.queries) +
+                                 " queries were counted, " + std::to_string(c.options.queries) +
+                                 " asked for");
     }
     for (const Finding& f : outcome.all.findings) result.reported.push_back(shrink(c, f));
     return result;
@@ -290,8 +299,8 @@ std::string summary_json(const PredicateFuzzResult& r) {
         FuzzCount sum;
         for (std::size_t p = 0; p < o.predicates.size(); ++p) {
             const FuzzCount& n = r.counts[f * o.predicates.size() + p];
-            preds[std::string(predicate_name(o.predicates[p]))] = {{"queries", n.queries},
-                                                                   {"disagreements", n.disagreements}};
+            preds[std::string(predicate_name(o.predicates[p]))] = {
+                {"queries", n.queries}, {"disagreements", n.disagreements}};
             sum.queries += n.queries;
             sum.disagreements += n.disagreements;
         }
@@ -316,8 +325,8 @@ std::string summary_json(const PredicateFuzzResult& r) {
                             {"shrink_steps", d.shrink_steps}});
     }
     j["reported"] = std::move(reported);
-    campaign::close_summary(j, o.max_reports, r.commit, r.seconds, r.ranks, o.jobs, "queries", r.total.queries,
-                            r.resumed_queries);
+    campaign::close_summary(j, o.max_reports, r.commit, r.seconds, r.ranks, o.jobs, "queries",
+                            r.total.queries, r.resumed_queries);
     return j.dump(2) + "\n";
 }
 

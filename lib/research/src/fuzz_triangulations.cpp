@@ -29,7 +29,8 @@ constexpr std::uint64_t fuzz_triangulations_id = 102;
 constexpr std::size_t outcome_count = all_outcomes.size();
 
 std::size_t outcome_position(Outcome o) {
-    return std::size_t(std::find(all_outcomes.begin(), all_outcomes.end(), o) - all_outcomes.begin());
+    return std::size_t(std::find(all_outcomes.begin(), all_outcomes.end(), o) -
+                       all_outcomes.begin());
 }
 
 struct Campaign {
@@ -43,21 +44,25 @@ struct Campaign {
           kernel(parse_kernel(options.kernel)),
           methods(methods_of(options.algorithms, options.orders)),
           // About 2^16 triangulations (of 50 points on average, a few seconds) a stripe.
-          layout(options.sets * methods.size() * options.policies.size(), methods.size() * options.policies.size(),
-                 std::uint64_t{1} << 16) {}
+          layout(options.sets * methods.size() * options.policies.size(),
+                 methods.size() * options.policies.size(), std::uint64_t{1} << 16) {}
 
     static TriangulationFuzzOptions complete(TriangulationFuzzOptions o) {
         if (o.families.empty()) {
-            for (const testing::FamilyInfo& f : testing::all_families()) o.families.push_back(f.family);
+            for (const testing::FamilyInfo& f : testing::all_families())
+                o.families.push_back(f.family);
         }
         if (o.algorithms.empty()) {
-            for (const delaunay::AlgorithmInfo& a : delaunay::algorithms()) o.algorithms.push_back(a.id);
+            for (const delaunay::AlgorithmInfo& a : delaunay::algorithms())
+                o.algorithms.push_back(a.id);
         }
         if (o.orders.empty()) o.orders.assign(all_orders.begin(), all_orders.end());
-        if (o.policies.empty()) o.policies = {delaunay::InCirclePolicy::determinant, delaunay::InCirclePolicy::cosine};
+        if (o.policies.empty())
+            o.policies = {delaunay::InCirclePolicy::determinant, delaunay::InCirclePolicy::cosine};
         if (o.min_points < 1 || o.min_points > o.max_points) {
             throw std::invalid_argument("the sizes must satisfy 1 <= MIN <= MAX, got " +
-                                        std::to_string(o.min_points) + "-" + std::to_string(o.max_points));
+                                        std::to_string(o.min_points) + "-" +
+                                        std::to_string(o.max_points));
         }
         if (o.max_points > 100'000) throw std::invalid_argument("the sizes go up to 100000 points");
         if (o.jobs == 0) o.jobs = 1;
@@ -65,18 +70,23 @@ struct Campaign {
     }
 
     std::size_t runs_per_set() const { return methods.size() * options.policies.size(); }
-    std::size_t family_position(std::uint64_t set) const { return std::size_t(set % options.families.size()); }
+    std::size_t family_position(std::uint64_t set) const {
+        return std::size_t(set % options.families.size());
+    }
 
     /// Set s as drawn (under the RapidCheck lock: common.hpp says why).
     std::vector<Point2> draw(std::uint64_t set) const {
         campaign::SplitMix64 sizes{derive_seed(options.seed, {fuzz_triangulations_id, set, 1})};
-        const std::size_t n = options.min_points + sizes.below(options.max_points - options.min_points + 1);
+        const std::size_t n =
+            options.min_points + sizes.below(options.max_points - options.min_points + 1);
         const rc::Random random(derive_seed(options.seed, {fuzz_triangulations_id, set}));
         const std::lock_guard lock(rapidcheck_mutex());
         return testing::gen_points(options.families[family_position(set)], n)(random).value();
     }
 
-    Method method_of(std::uint64_t unit) const { return methods[(unit % runs_per_set()) / options.policies.size()]; }
+    Method method_of(std::uint64_t unit) const {
+        return methods[(unit % runs_per_set()) / options.policies.size()];
+    }
     delaunay::InCirclePolicy policy_of(std::uint64_t unit) const {
         return options.policies[unit % options.policies.size()];
     }
@@ -91,7 +101,8 @@ Partial run_block(const Campaign& c, std::uint64_t set) {
     result.counts.resize(c.options.families.size() * c.runs_per_set() * outcome_count);
     const std::uint64_t first = set * c.runs_per_set();
     for (std::uint64_t unit = first; unit < first + c.runs_per_set(); ++unit) {
-        const Classification r = classify_triangulation(points, c.kernel, c.policy_of(unit), c.method_of(unit));
+        const Classification r =
+            classify_triangulation(points, c.kernel, c.policy_of(unit), c.method_of(unit));
         const std::size_t o = outcome_position(r.outcome);
         const std::size_t category = c.family_position(set) * c.runs_per_set() + (unit - first);
         ++result.counts[category * outcome_count + o];
@@ -104,14 +115,16 @@ Partial run_block(const Campaign& c, std::uint64_t set) {
 std::string campaign_text(const Campaign& c) {
     std::ostringstream out;
     const TriangulationFuzzOptions& o = c.options;
-    out << "exidel fuzz triangulations checkpoint 1\nkernel " << kernel_name(c.kernel) << "\nfamilies";
+    out << "exidel fuzz triangulations checkpoint 1\nkernel " << kernel_name(c.kernel)
+        << "\nfamilies";
     for (testing::Family f : o.families) out << ' ' << testing::family_name(f);
     out << "\nmethods";
-    for (const Method& m : c.methods) out << ' ' << delaunay::to_string(m.algorithm) << '/' << delaunay::to_string(m.order);
+    for (const Method& m : c.methods)
+        out << ' ' << delaunay::to_string(m.algorithm) << '/' << delaunay::to_string(m.order);
     out << "\npolicies";
     for (delaunay::InCirclePolicy p : o.policies) out << ' ' << policy_name(p);
-    out << "\nsizes " << o.min_points << '-' << o.max_points << "\nsets " << o.sets << "\nseed " << o.seed
-        << "\nreports " << o.max_reports << "\nexidel " << build_info().commit << '\n';
+    out << "\nsizes " << o.min_points << '-' << o.max_points << "\nsets " << o.sets << "\nseed "
+        << o.seed << "\nreports " << o.max_reports << "\nexidel " << build_info().commit << '\n';
     return out.str();
 }
 
@@ -132,19 +145,21 @@ TriangulationFinding report(const Campaign& c, const Finding& f) {
     const std::string kname = kernel_name(c.kernel);
     std::string kfile = kname;
     std::erase(kfile, ':');
-    r.file = std::string(to_string(r.outcome.outcome)) + "-" + kfile + "-" + std::string(policy_name(r.policy)) + "-" +
-             method_label(r.method) + "-" + std::string(testing::family_name(r.family)) + "-u" +
-             std::to_string(f.index) + ".xy";
+    r.file = std::string(to_string(r.outcome.outcome)) + "-" + kfile + "-" +
+             std::string(policy_name(r.policy)) + "-" + method_label(r.method) + "-" +
+             std::string(testing::family_name(r.family)) + "-u" + std::to_string(f.index) + ".xy";
     const auto describe = [](const Classification& k) {
         return std::string(to_string(k.outcome)) + (k.detail.empty() ? "" : " (" + k.detail + ")");
     };
-    const std::string flags =
-        "--kernel " + kname + " --incircle " + std::string(policy_name(r.policy)) + triangulate_order_flags(r.method);
+    const std::string flags = "--kernel " + kname + " --incircle " +
+                              std::string(policy_name(r.policy)) +
+                              triangulate_order_flags(r.method);
     const std::vector<std::string> header{
         "exidel fuzz triangulations fixture: " + describe(r.shrunk_outcome),
-        "family " + std::string(testing::family_name(r.family)) + ", unit " + std::to_string(f.index) + " of seed " +
-            std::to_string(c.options.seed) + ", " + std::to_string(r.points) + " points (" + describe(r.outcome) +
-            ") shrunk to " + std::to_string(r.shrunk.size()),
+        "family " + std::string(testing::family_name(r.family)) + ", unit " +
+            std::to_string(f.index) + " of seed " + std::to_string(c.options.seed) + ", " +
+            std::to_string(r.points) + " points (" + describe(r.outcome) + ") shrunk to " +
+            std::to_string(r.shrunk.size()),
         "reproduce: exidel triangulate -i FILE " + flags + " --certify",
     };
     write_text_file(c.options.out / r.file, fixture_text(r.shrunk, header));
@@ -155,7 +170,8 @@ TriangulationFinding report(const Campaign& c, const Finding& f) {
 
 std::string method_label(const Method& m) {
     return m.algorithm == delaunay::Algorithm::external
-               ? std::string(delaunay::to_string(m.algorithm)) + "-" + std::string(delaunay::to_string(m.order))
+               ? std::string(delaunay::to_string(m.algorithm)) + "-" +
+                     std::string(delaunay::to_string(m.order))
                : std::string(delaunay::to_string(m.algorithm));
 }
 
@@ -187,10 +203,12 @@ TriangulationFuzzResult fuzz_triangulations(const TriangulationFuzzOptions& opti
         }
     }
     if (result.triangulations != c.layout.units) {
-        throw std::runtime_error("fuzz: " + std::to_string(result.triangulations) + " triangulations were counted, " +
-                                 std::to_string(c.layout.units) + " asked for");
+        throw std::runtime_error("fuzz: " + std::to_string(result.triangulations) +
+                                 " triangulations were counted, " + std::to_string(c.layout.units) +
+                                 " asked for");
     }
-    if (!c.options.out.empty() && !outcome.all.findings.empty()) std::filesystem::create_directories(c.options.out);
+    if (!c.options.out.empty() && !outcome.all.findings.empty())
+        std::filesystem::create_directories(c.options.out);
     result.reported.resize(outcome.all.findings.size());
     parallel_for(result.reported.size(), c.options.jobs,
                  [&](std::size_t i) { result.reported[i] = report(c, outcome.all.findings[i]); });
@@ -213,7 +231,8 @@ std::string summary_json(const TriangulationFuzzResult& r) {
             runs += r.counts[i];
         }
         j["triangulations"] = runs;
-        for (std::size_t k = 0; k < outcome_count; ++k) j[std::string(to_string(all_outcomes[k]))] = sum[k];
+        for (std::size_t k = 0; k < outcome_count; ++k)
+            j[std::string(to_string(all_outcomes[k]))] = sum[k];
         return j;
     };
     Json j;
@@ -232,7 +251,8 @@ std::string summary_json(const TriangulationFuzzResult& r) {
             outcomes([f](std::size_t ff, std::size_t, std::size_t) { return ff == f; });
     }
     for (std::size_t m = 0; m < M; ++m) {
-        methods[method_label(r.methods[m])] = outcomes([m](std::size_t, std::size_t mm, std::size_t) { return mm == m; });
+        methods[method_label(r.methods[m])] =
+            outcomes([m](std::size_t, std::size_t mm, std::size_t) { return mm == m; });
     }
     for (std::size_t p = 0; p < P; ++p) {
         policies[std::string(policy_name(o.policies[p]))] =
@@ -255,8 +275,8 @@ std::string summary_json(const TriangulationFuzzResult& r) {
                             {"file", f.file}});
     }
     j["reported"] = std::move(reported);
-    campaign::close_summary(j, o.max_reports, r.commit, r.seconds, r.ranks, o.jobs, "triangulations",
-                            r.triangulations, r.resumed);
+    campaign::close_summary(j, o.max_reports, r.commit, r.seconds, r.ranks, o.jobs,
+                            "triangulations", r.triangulations, r.resumed);
     return j.dump(2) + "\n";
 }
 

@@ -248,7 +248,10 @@ std::string render_svg(const LinePlot& plot) {
             if (s.y[i] > 0) ymin_pos = std::min(ymin_pos, s.y[i]);
         }
     }
-    if (!(xmin < xmax)) { xmin = 0; xmax = 1; }
+    if (!(xmin < xmax)) {
+        xmin = 0;
+        xmax = 1;
+    }
     // y mapping. Log: decades from floor(log10 min positive) to ceil(log10 max); zeros
     // go one band below the lowest decade, labelled "0" and separated by a dashed line.
     int dlo = 0, dhi = 0;
@@ -278,8 +281,9 @@ std::string render_svg(const LinePlot& plot) {
     s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H
       << "\" viewBox=\"0 0 " << W << ' ' << H << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-      << "<text x=\"" << number(left + pw / 2) << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">"
-      << escape_xml(plot.title) << "</text>\n";
+      << "<text x=\"" << number(left + pw / 2)
+      << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">" << escape_xml(plot.title)
+      << "</text>\n";
     // Grid and ticks.
     const double xstep = [&] {
         const double span = xmax - xmin;

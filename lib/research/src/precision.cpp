@@ -18,7 +18,7 @@ constexpr std::size_t queries_per_chunk = 250;
 std::vector<unsigned> default_bits() {
     std::vector<unsigned> bits;
     for (unsigned p = 24; p <= 128; p += 8) bits.push_back(p);
-    bits.push_back(53);  // double
+    bits.push_back(53);   // double
     bits.push_back(106);  // double-double
     for (unsigned p : {160u, 192u, 224u, 256u, 320u, 384u, 448u, 512u}) bits.push_back(p);
     std::sort(bits.begin(), bits.end());
@@ -43,7 +43,7 @@ struct Chunk {
 struct ChunkResult {
     std::vector<std::uint64_t> wrong;  // per bits
     std::uint64_t total = 0;
-    std::vector<int> b;                // grid width of every query
+    std::vector<int> b;  // grid width of every query
 };
 
 /// One query of formulation f and family fam from `random` (a split stream: the query
@@ -67,7 +67,8 @@ PrecisionStudy run_precision_study(const PrecisionOptions& options, const RunOpt
     const std::vector<unsigned> bits = options.bits.empty() ? default_bits() : options.bits;
     for (unsigned p : bits) {
         if (p < MpfrKernel::min_bits || p > MpfrKernel::max_bits) {
-            throw std::invalid_argument("precision bits must be in [2, 2^20], got " + std::to_string(p));
+            throw std::invalid_argument("precision bits must be in [2, 2^20], got " +
+                                        std::to_string(p));
         }
     }
     const std::vector<testing::Family> families =
@@ -131,9 +132,16 @@ PrecisionStudy run_precision_study(const PrecisionOptions& options, const RunOpt
     Table rates;
     rates.header = {"formulation", "family", "bits", "wrong", "total", "rate"};
     Table thresholds;
-    thresholds.header = {"formulation", "family", "queries", "b median", "b max",
-                         "bound at median b", "bound at max b", "queries within 512-bit bound",
-                         "smallest error-free p (measured)", "wrong at p=53"};
+    thresholds.header = {"formulation",
+                         "family",
+                         "queries",
+                         "b median",
+                         "b max",
+                         "bound at median b",
+                         "bound at max b",
+                         "queries within 512-bit bound",
+                         "smallest error-free p (measured)",
+                         "wrong at p=53"};
     LinePlot plot;
     plot.title = "Wrong-sign rate of the MPFR kernel vs precision (near-degenerate families)";
     plot.x_label = "significand bits p";
@@ -147,9 +155,10 @@ PrecisionStudy run_precision_study(const PrecisionOptions& options, const RunOpt
             Cell& cell = cells[{int(f), int(fam)}];
             for (std::size_t p = 0; p < bits.size(); ++p) {
                 study.cells.push_back({f, fam, bits[p], cell.wrong[p], cell.total});
-                rates.rows.push_back({std::string(predicate_name(f)), std::string(testing::family_name(fam)),
-                                      std::to_string(bits[p]), std::to_string(cell.wrong[p]),
-                                      std::to_string(cell.total), format_rate(cell.wrong[p], cell.total)});
+                rates.rows.push_back(
+                    {std::string(predicate_name(f)), std::string(testing::family_name(fam)),
+                     std::to_string(bits[p]), std::to_string(cell.wrong[p]),
+                     std::to_string(cell.total), format_rate(cell.wrong[p], cell.total)});
                 pooled_wrong[p] += cell.wrong[p];
             }
             pooled_total += cell.total;
@@ -163,14 +172,18 @@ PrecisionStudy run_precision_study(const PrecisionOptions& options, const RunOpt
             std::sort(b.begin(), b.end());
             const int b_median = b.empty() ? 0 : b[b.size() / 2];
             const int b_max = b.empty() ? 0 : b.back();
-            const auto within = std::count_if(b.begin(), b.end(), [&](int v) { return testing::exact_bits(f, v) <= 512; });
+            const auto within = std::count_if(
+                b.begin(), b.end(), [&](int v) { return testing::exact_bits(f, v) <= 512; });
             const auto at53 = std::find(bits.begin(), bits.end(), 53u);
             thresholds.rows.push_back(
-                {std::string(predicate_name(f)), std::string(testing::family_name(fam)), std::to_string(cell.total),
-                 std::to_string(b_median), std::to_string(b_max), std::to_string(testing::exact_bits(f, b_median)),
+                {std::string(predicate_name(f)), std::string(testing::family_name(fam)),
+                 std::to_string(cell.total), std::to_string(b_median), std::to_string(b_max),
+                 std::to_string(testing::exact_bits(f, b_median)),
                  std::to_string(testing::exact_bits(f, b_max)),
                  format_fraction(b.empty() ? 0 : double(within) / double(b.size())), smallest,
-                 at53 == bits.end() ? "-" : std::to_string(cell.wrong[std::size_t(at53 - bits.begin())])});
+                 at53 == bits.end()
+                     ? "-"
+                     : std::to_string(cell.wrong[std::size_t(at53 - bits.begin())])});
         }
         for (std::size_t p = 0; p < bits.size(); ++p) {
             series.x.push_back(bits[p]);
@@ -190,14 +203,17 @@ PrecisionStudy run_precision_study(const PrecisionOptions& options, const RunOpt
     study.report = Report("Precision: wrong-sign rate of the MPFR kernel");
     study.report.paragraph(
         "The MPFR kernel evaluates exactly the floating kernel's formulas with every "
-        "operation rounded to p bits. For each formulation and family, " + std::to_string(samples) +
-        " queries (seed " + std::to_string(run.seed) + ") were evaluated at every p and "
-        "compared with the exact kernel. Families: " + family_list + ".");
+        "operation rounded to p bits. For each formulation and family, " +
+        std::to_string(samples) + " queries (seed " + std::to_string(run.seed) +
+        ") were evaluated at every p and "
+        "compared with the exact kernel. Families: " +
+        family_list + ".");
     study.report.append(family_definitions(families));
     study.report.image("wrong-sign rate vs precision", "precision.svg");
     study.report.paragraph(
         "Smallest precision without errors, measured, beside the bit counts of "
-        "proofs/bitcounts.md for our evaluation order (2b+3, 4b+8, 8b+12; an earlier count of 8b+13 "
+        "proofs/bitcounts.md for our evaluation order (2b+3, 4b+8, 8b+12; an earlier count of "
+        "8b+13 "
         "included one subtraction more) at the median and the largest grid width b of the sampled "
         "queries (b = 53 + exponent spread). The bound is sufficient, not necessary: the "
         "measured p is usually far below it, and families with subnormal or widely spread "

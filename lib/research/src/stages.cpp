@@ -43,9 +43,10 @@ namespace {
 constexpr std::uint64_t stages_study_id = 4;
 constexpr std::size_t queries_per_chunk = 1000;
 
-constexpr const char* stage_names[adaptive_stage_count] = {"filter", "small_integer", "double_word", "stage_b", "stage_c", "exact", "gmp"};
+constexpr const char* stage_names[adaptive_stage_count] = {
+    "filter", "small_integer", "double_word", "stage_b", "stage_c", "exact", "gmp"};
 constexpr const char* contexts[] = {"stream", "triangulation/determinant", "triangulation/cosine",
-                                     "triangulation/radial"};
+                                    "triangulation/radial"};
 constexpr std::size_t context_count = std::size(contexts);
 
 /// The triangulations of a triangulation chunk, one per context after "stream".
@@ -76,7 +77,8 @@ namespace {
 /// hands the call to GMP at once.
 std::string exponent_spread_text(const std::vector<testing::Family>& families,
                                  std::map<std::pair<std::size_t, int>, StageCounts>& combined) {
-    const auto share = [](const std::array<std::uint64_t, adaptive_stage_count>& per, AdaptiveStage st) {
+    const auto share = [](const std::array<std::uint64_t, adaptive_stage_count>& per,
+                          AdaptiveStage st) {
         std::uint64_t calls = 0;
         for (std::uint64_t v : per) calls += v;
         return calls == 0 ? 0.0 : double(per[std::size_t(st)]) / double(calls);
@@ -111,7 +113,8 @@ std::string exponent_spread_text(const std::vector<testing::Family>& families,
         "**What the exponent spread does.** In most families it is the exponent range, not "
         "near-degeneracy, that sends calls past the filter. Every family but uniform and kettner "
         "(and duplicates when it copies those) scales its points by 2^k with k drawn over most of "
-        "the double range, and wide_exponents puts every coordinate at its own exponent. The filters' error bounds hold only away from overflow and underflow: an "
+        "the double range, and wide_exponents puts every coordinate at its own exponent. The "
+        "filters' error bounds hold only away from overflow and underflow: an "
         "orient2d product above 2^1024 is infinite and never passes the filter's strict test "
         "(coordinates above about 2^511), and far in the subnormals the bound's absolute "
         "underflow term (2^-1070) exceeds the value (coordinates below about 2^-535); incircle's "
@@ -124,18 +127,21 @@ std::string exponent_spread_text(const std::vector<testing::Family>& families,
         "to GMP at once, without the expansion "
         "stages: the gmp column measures the exponent range a family draws from (incircle first "
         "tries its small-integer stage, which has no range limit, and its double-word stage, "
-        "proven for differences in [2^-220, 2^220], so fewer of its calls get there). incircle_cosine "
-        "never reaches GMP: its last stage is cpp_int, which has no range limit (its exact column). ";
+        "proven for differences in [2^-220, 2^220], so fewer of its calls get there). "
+        "incircle_cosine "
+        "never reaches GMP: its last stage is cpp_int, which has no range limit (its exact "
+        "column). ";
     if (const std::size_t last = without_gmp.rfind(", "); last != std::string::npos) {
         without_gmp.replace(last, 2, " and ");
     }
-    if (!without_gmp.empty()) text += "In this run no stream call of " + without_gmp + " reached GMP";
+    if (!without_gmp.empty())
+        text += "In this run no stream call of " + without_gmp + " reached GMP";
     if (orient.hi >= 0) {
-        text += std::string(without_gmp.empty() ? "In this run" : ";") + " GMP decided " + percent(orient.lo) +
-                " (" + orient.lo_family + ") to " + percent(orient.hi) + " (" + orient.hi_family +
-                ") of the orient2d stream calls and " + percent(incircle.lo) + " (" + incircle.lo_family +
-                ") to " + percent(incircle.hi) + " (" + incircle.hi_family +
-                ") of the incircle stream calls of the other families";
+        text += std::string(without_gmp.empty() ? "In this run" : ";") + " GMP decided " +
+                percent(orient.lo) + " (" + orient.lo_family + ") to " + percent(orient.hi) + " (" +
+                orient.hi_family + ") of the orient2d stream calls and " + percent(incircle.lo) +
+                " (" + incircle.lo_family + ") to " + percent(incircle.hi) + " (" +
+                incircle.hi_family + ") of the incircle stream calls of the other families";
     }
     if (!without_gmp.empty() || orient.hi >= 0) text += ".";
     return text;
@@ -156,7 +162,7 @@ StagesStudy run_stages_study(const StagesOptions& options, const RunOptions& run
     // triangulated once per triangulation context.
     struct Chunk {
         testing::Family family;
-        int context;              // 0 stream, 1 triangulation (every triangulation context)
+        int context;                // 0 stream, 1 triangulation (every triangulation context)
         std::size_t predicate = 0;  // stream only: the row of StageCounts
         std::size_t index = 0;
         StageCounts counts[context_count - 1]{};  // stream: [0]; triangulation: per context
@@ -174,15 +180,16 @@ StagesStudy run_stages_study(const StagesOptions& options, const RunOptions& run
         Chunk& c = chunks[i];
         const StageCountingKernel kernel;
         if (c.context == 0) {
-            const std::size_t count = std::min(queries_per_chunk, samples - c.index * queries_per_chunk);
+            const std::size_t count =
+                std::min(queries_per_chunk, samples - c.index * queries_per_chunk);
             std::vector<std::array<Point2, 4>> queries(count);
             // compare_distance(c, p, q) takes three points of the family, like orient2d;
             // rows 0-2 are the Formulation values, so their streams keep their seeds.
             const bool three_points = point_count(stage_predicates[c.predicate]) == 3;
             {
                 const std::lock_guard lock(rapidcheck_mutex());
-                rc::Random random(derive_seed(run.seed, {stages_study_id, std::uint64_t(c.family), 0,
-                                                         std::uint64_t(c.predicate), c.index}));
+                rc::Random random(derive_seed(run.seed, {stages_study_id, std::uint64_t(c.family),
+                                                         0, std::uint64_t(c.predicate), c.index}));
                 for (auto& q : queries) {
                     const rc::Random r = random.split();
                     if (three_points) {
@@ -204,13 +211,15 @@ StagesStudy run_stages_study(const StagesOptions& options, const RunOptions& run
             std::vector<Point2> points;
             {
                 const std::lock_guard lock(rapidcheck_mutex());
-                const rc::Random random(derive_seed(run.seed, {stages_study_id, std::uint64_t(c.family), 1, c.index}));
+                const rc::Random random(
+                    derive_seed(run.seed, {stages_study_id, std::uint64_t(c.family), 1, c.index}));
                 points = testing::gen_points(c.family, size)(random).value();
             }
             for (std::size_t t = 0; t < std::size(triangulation_contexts); ++t) {
                 const StageCountingKernel counting;
-                (void)delaunay::triangulate(points, counting, study_options(triangulation_contexts[t].policy,
-                                                                            triangulation_contexts[t].order));
+                (void)delaunay::triangulate(points, counting,
+                                            study_options(triangulation_contexts[t].policy,
+                                                          triangulation_contexts[t].order));
                 c.counts[t] = counting.counts;
             }
         }
@@ -219,11 +228,13 @@ StagesStudy run_stages_study(const StagesOptions& options, const RunOptions& run
     StagesStudy study;
     std::map<std::pair<std::size_t, int>, StageCounts> combined;  // (family position, context)
     for (const Chunk& c : chunks) {
-        const auto f = std::size_t(std::find(families.begin(), families.end(), c.family) - families.begin());
+        const auto f =
+            std::size_t(std::find(families.begin(), families.end(), c.family) - families.begin());
         if (c.context == 0) {
             add(combined[{f, 0}], c.counts[0]);
         } else {
-            for (std::size_t t = 0; t + 1 < context_count; ++t) add(combined[{f, int(t + 1)}], c.counts[t]);
+            for (std::size_t t = 0; t + 1 < context_count; ++t)
+                add(combined[{f, int(t + 1)}], c.counts[t]);
         }
     }
     study.table.header = {"family", "context", "predicate", "calls"};
@@ -239,9 +250,11 @@ StagesStudy run_stages_study(const StagesOptions& options, const RunOptions& run
                 std::uint64_t calls = 0;
                 for (std::uint64_t v : per) calls += v;
                 if (calls == 0) continue;  // e.g. incircle_cosine in a determinant triangulation
-                std::vector<std::string> row{std::string(testing::family_name(families[f])), contexts[ctx],
-                                             std::string(predicate_name(stage_predicates[pred])), std::to_string(calls)};
-                for (std::uint64_t v : per) row.push_back(format_fraction(double(v) / double(calls)));
+                std::vector<std::string> row{
+                    std::string(testing::family_name(families[f])), contexts[ctx],
+                    std::string(predicate_name(stage_predicates[pred])), std::to_string(calls)};
+                for (std::uint64_t v : per)
+                    row.push_back(format_fraction(double(v) / double(calls)));
                 study.table.rows.push_back(std::move(row));
             }
         }
@@ -255,7 +268,9 @@ StagesStudy run_stages_study(const StagesOptions& options, const RunOptions& run
             std::uint64_t calls = 0;
             for (std::uint64_t v : per) calls += v;
             if (calls == 0) continue;
-            std::vector<std::string> row{contexts[ctx], std::string(predicate_name(stage_predicates[pred])), std::to_string(calls)};
+            std::vector<std::string> row{contexts[ctx],
+                                         std::string(predicate_name(stage_predicates[pred])),
+                                         std::to_string(calls)};
             for (std::uint64_t v : per) row.push_back(format_fraction(double(v) / double(calls)));
             summary.rows.push_back(std::move(row));
         }
@@ -267,7 +282,8 @@ StagesStudy run_stages_study(const StagesOptions& options, const RunOptions& run
     // summary mixes families whose exponent ranges differ, which is what decides the stage).
     Table streams, inside;
     streams.header = inside.header = study.table.header;
-    for (const auto& row : study.table.rows) (row[1] == contexts[0] ? streams : inside).rows.push_back(row);
+    for (const auto& row : study.table.rows)
+        (row[1] == contexts[0] ? streams : inside).rows.push_back(row);
     streams.header.erase(streams.header.begin() + 1);
     for (auto& row : streams.rows) row.erase(row.begin() + 1);
 
@@ -284,13 +300,18 @@ StagesStudy run_stages_study(const StagesOptions& options, const RunOptions& run
         "when its differences were exact, e.g. exact ties on grids; stage_c: first-order tail "
         "correction; exact: expansion arithmetic / cpp_int; gmp: magnitudes outside the "
         "expansion range). "
-        "'stream': " + std::to_string(samples) + " queries per family and "
-        "predicate (compare_distance(c, p, q) on three points of the family); 'triangulation/...': the "
-        "calls made while triangulating " + std::to_string(seeds) +
-        " point sets of " + std::to_string(size) + " points per family: in the paper's lexicographic "
+        "'stream': " +
+        std::to_string(samples) +
+        " queries per family and "
+        "predicate (compare_distance(c, p, q) on three points of the family); 'triangulation/...': "
+        "the "
+        "calls made while triangulating " +
+        std::to_string(seeds) + " point sets of " + std::to_string(size) +
+        " points per family: in the paper's lexicographic "
         "order with each in-circle policy (determinant, cosine), and in the radial order with the "
         "determinant (radial: its sort is the only user of compare_distance). "
-        "Seed " + std::to_string(run.seed) + ".");
+        "Seed " +
+        std::to_string(run.seed) + ".");
     study.report.append(family_definitions(families));
     study.report.paragraph(exponent_spread_text(families, combined));
     study.report.heading("Per family: query streams");
@@ -298,8 +319,9 @@ StagesStudy run_stages_study(const StagesOptions& options, const RunOptions& run
     study.report.heading("Per family: inside triangulations");
     study.report.table(inside);
     study.report.link("stages.csv", "stages.csv");
-    study.report.paragraph("All families pooled (the stage shares of a pool depend on which "
-                           "families it mixes; read the tables above):");
+    study.report.paragraph(
+        "All families pooled (the stage shares of a pool depend on which "
+        "families it mixes; read the tables above):");
     study.report.link("stages_summary.csv", "stages_summary.csv");
     return study;
 }

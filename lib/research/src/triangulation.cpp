@@ -68,7 +68,9 @@ constexpr delaunay::InCirclePolicy both_policies[] = {delaunay::InCirclePolicy::
 bool is_wrong(Outcome o) { return o != Outcome::delaunay; }
 
 bool is_external(const Method& m) { return m.algorithm == delaunay::Algorithm::external; }
-bool is_paper_order(const Method& m) { return is_external(m) && m.order == delaunay::Strategy::lexicographic; }
+bool is_paper_order(const Method& m) {
+    return is_external(m) && m.order == delaunay::Strategy::lexicographic;
+}
 
 /// What the "order" column shows: the insertion order of the external algorithm; other
 /// algorithms take none.
@@ -99,7 +101,9 @@ std::uint64_t orientations(const delaunay::Counters& c) {
     return c.seed_orientations + c.tangent_orientations + c.visible_search_orientations +
            c.merge_orientations + c.location_orientations + c.cavity_orientations;
 }
-std::uint64_t incircle_tests(const delaunay::Counters& c) { return c.incircle_tests + c.merge_incircle_tests; }
+std::uint64_t incircle_tests(const delaunay::Counters& c) {
+    return c.incircle_tests + c.merge_incircle_tests;
+}
 
 /// One point set's work under one order (the work table's unit).
 struct WorkSample {
@@ -142,8 +146,8 @@ std::vector<T> parse_names(std::string_view list, std::span<const T> all, Lookup
         } else if (const std::optional<T> item = lookup(name)) {
             add(*item);
         } else {
-            throw std::invalid_argument("unknown " + what + " '" + std::string(name) + "' (expected " +
-                                        expected + ")");
+            throw std::invalid_argument("unknown " + what + " '" + std::string(name) +
+                                        "' (expected " + expected + ")");
         }
         list = comma == std::string_view::npos ? std::string_view{} : list.substr(comma + 1);
     }
@@ -164,7 +168,8 @@ std::string_view policy_name(delaunay::InCirclePolicy p) {
 std::string triangulate_order_flags(const Method& m) {
     if (!is_external(m)) return algorithm_flag(m);
     std::string flags = " --order " + std::string(delaunay::to_string(m.order));
-    if (m.order == delaunay::Strategy::strips) flags += " --strip-points " + std::to_string(study_strip_points);
+    if (m.order == delaunay::Strategy::strips)
+        flags += " --strip-points " + std::to_string(study_strip_points);
     return flags;
 }
 
@@ -239,7 +244,8 @@ Classification classify_triangulation(std::span<const Point2> points, const Kern
     } catch (const GuardExceeded&) {
         return {Outcome::guard, "more than " + std::to_string(budget) + " predicate calls"};
     }
-    if (result->failure) return {Outcome::failure, std::string(delaunay::to_string(result->failure->kind))};
+    if (result->failure)
+        return {Outcome::failure, std::string(delaunay::to_string(result->failure->kind))};
     const delaunay::Certificate cert = delaunay::certify(points, result->triangulation);
     if (cert.ok()) return {Outcome::delaunay, ""};
     // The Delaunay check runs last and only when every earlier check passed, so a first
@@ -251,8 +257,8 @@ Classification classify_triangulation(std::span<const Point2> points, const Kern
 }
 
 std::vector<Point2> shrink_failing_input(std::vector<Point2> points, const Kernel& kernel,
-                                         delaunay::InCirclePolicy policy, const Classification& target,
-                                         Method method) {
+                                         delaunay::InCirclePolicy policy,
+                                         const Classification& target, Method method) {
     const auto still_fails = [&](const std::vector<Point2>& candidate) {
         const Classification c = classify_triangulation(candidate, kernel, policy, method);
         return c.outcome == target.outcome &&
@@ -270,7 +276,8 @@ std::vector<Point2> shrink_failing_input(std::vector<Point2> points, const Kerne
             const std::size_t end = std::min(points.size(), start + chunk);
             std::vector<Point2> candidate;
             candidate.reserve(points.size());
-            candidate.insert(candidate.end(), points.begin(), points.begin() + std::ptrdiff_t(start));
+            candidate.insert(candidate.end(), points.begin(),
+                             points.begin() + std::ptrdiff_t(start));
             candidate.insert(candidate.end(), points.begin() + std::ptrdiff_t(end), points.end());
             ++attempts;
             if (still_fails(candidate)) {
@@ -305,11 +312,13 @@ Classification replay_fixture(const std::filesystem::path& file, const Kernel& k
                               delaunay::InCirclePolicy policy, Method method) {
     std::ifstream in(file, std::ios::binary);
     if (!in) throw std::runtime_error("cannot open " + file.string());
-    const std::vector<Point2> points = io::read_points(in, io::point_format_from_path(file.string()));
+    const std::vector<Point2> points =
+        io::read_points(in, io::point_format_from_path(file.string()));
     return classify_triangulation(points, kernel, policy, method);
 }
 
-TriangulationStudy run_triangulation_study(const TriangulationOptions& options, const RunOptions& run) {
+TriangulationStudy run_triangulation_study(const TriangulationOptions& options,
+                                           const RunOptions& run) {
     std::vector<std::string> kernel_names = options.kernels;
     if (kernel_names.empty()) {
         kernel_names = {"double", "long-double", "mpfr:53", "mpfr:106", "adaptive", "exact"};
@@ -321,16 +330,19 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
         for (const auto& info : testing::all_families()) families.push_back(info.family);
     }
     const std::vector<delaunay::Strategy> orders =
-        options.orders.empty() ? std::vector<delaunay::Strategy>{delaunay::Strategy::lexicographic} : options.orders;
+        options.orders.empty() ? std::vector<delaunay::Strategy>{delaunay::Strategy::lexicographic}
+                               : options.orders;
     for (delaunay::Strategy o : orders) {
         if (std::find(all_orders.begin(), all_orders.end(), o) == all_orders.end()) {
-            throw std::invalid_argument("the triangulation study runs lexicographic, radial or strips, not " +
-                                        std::string(delaunay::to_string(o)));
+            throw std::invalid_argument(
+                "the triangulation study runs lexicographic, radial or strips, not " +
+                std::string(delaunay::to_string(o)));
         }
     }
     std::vector<delaunay::Algorithm> algorithms = options.algorithms;
     if (algorithms.empty()) {
-        for (const delaunay::AlgorithmInfo& info : delaunay::algorithms()) algorithms.push_back(info.id);
+        for (const delaunay::AlgorithmInfo& info : delaunay::algorithms())
+            algorithms.push_back(info.id);
     }
     // What the outcome tables run, and what the work table runs (every order).
     const std::vector<Method> methods = methods_of(algorithms, orders);
@@ -341,12 +353,14 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
     const std::vector<std::size_t> sizes =
         options.sizes.empty() ? std::vector<std::size_t>{50, 100, 200, 500} : options.sizes;
     for (std::size_t n : sizes) {
-        if (n < 1 || n > 100000) throw std::invalid_argument("triangulation sizes must be in [1, 100000]");
+        if (n < 1 || n > 100000)
+            throw std::invalid_argument("triangulation sizes must be in [1, 100000]");
     }
     const std::size_t per_method = kernels.size() * std::size(both_policies);
-    const std::vector<unsigned> bits = options.precision_bits.empty()
-                                           ? std::vector<unsigned>{12, 16, 20, 24, 32, 40, 48, 53, 64, 80, 106}
-                                           : options.precision_bits;
+    const std::vector<unsigned> bits =
+        options.precision_bits.empty()
+            ? std::vector<unsigned>{12, 16, 20, 24, 32, 40, 48, 53, 64, 80, 106}
+            : options.precision_bits;
     std::vector<Kernel> mpfr_kernels;
     for (unsigned b : bits) mpfr_kernels.push_back(parse_kernel("mpfr:" + std::to_string(b)));
 
@@ -370,15 +384,16 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
         const std::size_t n = sizes[c.seed_index % sizes.size()];
         {
             const std::lock_guard lock(rapidcheck_mutex());
-            const rc::Random random(derive_seed(run.seed, {triangulation_study_id, std::uint64_t(c.family),
-                                                           c.seed_index}));
+            const rc::Random random(derive_seed(
+                run.seed, {triangulation_study_id, std::uint64_t(c.family), c.seed_index}));
             c.points = testing::gen_points(c.family, n)(random).value();
         }
         for (const Method& m : methods) {
             for (const Kernel& k : kernels) {
                 for (delaunay::InCirclePolicy p : both_policies) {
                     c.runs.push_back({c.family, c.seed_index, n, kernel_name(k), p,
-                                      classify_triangulation(c.points, k, p, m), m.order, m.algorithm});
+                                      classify_triangulation(c.points, k, p, m), m.order,
+                                      m.algorithm});
                 }
             }
         }
@@ -408,7 +423,8 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
     std::map<std::tuple<std::size_t, std::size_t, int, int>, std::size_t> shrink_count;
     for (std::size_t ci = 0; ci < chunks.size(); ++ci) {
         const Chunk& c = chunks[ci];
-        const auto fpos = std::size_t(std::find(families.begin(), families.end(), c.family) - families.begin());
+        const auto fpos =
+            std::size_t(std::find(families.begin(), families.end(), c.family) - families.begin());
         for (std::size_t r = 0; r < c.runs.size(); ++r) {
             const TriangulationRun& tr = c.runs[r];
             const std::size_t opos = r / per_method;
@@ -450,7 +466,8 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
         cells.push_back(order_name(m));
         return cells;
     };
-    const auto method_header = [&](std::vector<std::string> before, std::vector<std::string> after) {
+    const auto method_header = [&](std::vector<std::string> before,
+                                   std::vector<std::string> after) {
         if (algorithm_column) before.emplace_back("algorithm");
         before.emplace_back("order");
         before.insert(before.end(), after.begin(), after.end());
@@ -468,7 +485,8 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
                 for (delaunay::InCirclePolicy p : both_policies) {
                     const auto& row_counts = counts[{f, op, k, int(p)}];
                     std::vector<std::string> row =
-                        join(join({std::string(testing::family_name(families[f]))}, method_cells(methods[op])),
+                        join(join({std::string(testing::family_name(families[f]))},
+                                  method_cells(methods[op])),
                              {kernel_name(kernels[k]), std::string(policy_name(p))});
                     for (std::uint64_t v : row_counts) row.push_back(std::to_string(v));
                     study.table.rows.push_back(std::move(row));
@@ -487,7 +505,8 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
                 std::uint64_t runs = 0;
                 for (std::uint64_t v : t) runs += v;
                 std::vector<std::string> row = join(
-                    method_cells(methods[op]), {kernel_name(kernels[k]), std::string(policy_name(p)), std::to_string(runs)});
+                    method_cells(methods[op]),
+                    {kernel_name(kernels[k]), std::string(policy_name(p)), std::to_string(runs)});
                 for (std::uint64_t v : t) row.push_back(std::to_string(v));
                 std::string kinds;
                 for (const auto& [what, n] : details[{op, k, int(p)}]) {
@@ -529,20 +548,21 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
         }
     }
     Table work_table;
-    work_table.header = method_header({"family"}, {"point sets", "points", "flips/point", "in-circle tests/point",
-                                                   "orientations/point", "distance comparisons/point",
-                                                   "location steps/point", "triangles created/point", "merges",
-                                                   "certified"});
+    work_table.header = method_header(
+        {"family"}, {"point sets", "points", "flips/point", "in-circle tests/point",
+                     "orientations/point", "distance comparisons/point", "location steps/point",
+                     "triangles created/point", "merges", "certified"});
     const auto work_row = [&](std::string family, const OrderWork& w) {
-        work_table.rows.push_back(join(join({std::move(family)}, method_cells(Method(w.algorithm, w.order))), {
-                                   std::to_string(w.sets), std::to_string(w.points),
-                                   per_point(w.counters.flips(), w.points),
-                                   per_point(incircle_tests(w.counters), w.points),
-                                   per_point(orientations(w.counters), w.points),
-                                   per_point(w.distance_comparisons, w.points),
-                                   per_point(w.counters.location_steps, w.points),
-                                   per_point(w.counters.triangles_created, w.points), std::to_string(w.merges),
-                                   std::to_string(w.certified) + "/" + std::to_string(w.sets)}));
+        work_table.rows.push_back(
+            join(join({std::move(family)}, method_cells(Method(w.algorithm, w.order))),
+                 {std::to_string(w.sets), std::to_string(w.points),
+                  per_point(w.counters.flips(), w.points),
+                  per_point(incircle_tests(w.counters), w.points),
+                  per_point(orientations(w.counters), w.points),
+                  per_point(w.distance_comparisons, w.points),
+                  per_point(w.counters.location_steps, w.points),
+                  per_point(w.counters.triangles_created, w.points), std::to_string(w.merges),
+                  std::to_string(w.certified) + "/" + std::to_string(w.sets)}));
     };
     for (const OrderWork& w : study.work) work_row(std::string(testing::family_name(w.family)), w);
     for (const OrderWork& w : overall) work_row("all families", w);
@@ -553,50 +573,55 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
         Progress shrink_progress("shrinking", to_shrink.size(), run.progress);
         for_each_chunk(to_shrink.size(), run.jobs, &shrink_progress, [&](std::size_t i) {
             const Candidate& c = to_shrink[i];
-            shrunk[i] = shrink_failing_input(c.chunk->points, kernels[c.kernel], c.run.policy, c.run.result,
-                                             Method(c.run.algorithm, c.run.order));
+            shrunk[i] = shrink_failing_input(c.chunk->points, kernels[c.kernel], c.run.policy,
+                                             c.run.result, Method(c.run.algorithm, c.run.order));
         });
     }
     Table fixtures_table;
-    fixtures_table.header = method_header({"fixture"}, {"kernel", "incircle", "outcome", "points (original)", "replays"});
+    fixtures_table.header = method_header(
+        {"fixture"}, {"kernel", "incircle", "outcome", "points (original)", "replays"});
     for (std::size_t i = 0; i < to_shrink.size(); ++i) {
         const Candidate& c = to_shrink[i];
         const Kernel& k = kernels[c.kernel];
         const std::string kname = kernel_name(k);
         const Method method(c.run.algorithm, c.run.order);
-        const std::string oname = is_external(method) ? order_name(method)
-                                                      : std::string(delaunay::to_string(method.algorithm));
+        const std::string oname = is_external(method)
+                                      ? order_name(method)
+                                      : std::string(delaunay::to_string(method.algorithm));
         // The paper's order keeps the names fixtures had before orders existed; another
         // algorithm's fixtures carry its name instead of an order.
         const std::string file = "fixtures/" + std::string(to_string(c.run.result.outcome)) + "-" +
-                                 kernel_file_name(k) + "-" + std::string(policy_name(c.run.policy)) +
+                                 kernel_file_name(k) + "-" +
+                                 std::string(policy_name(c.run.policy)) +
                                  (is_paper_order(method) ? "" : "-" + oname) + "-" +
                                  std::string(testing::family_name(c.run.family)) + "-s" +
                                  std::to_string(c.run.seed_index) + ".xy";
         // The shrunk set's own classification (its detail may differ from the original's
         // for invalid and not_delaunay outcomes, which shrink by outcome only).
         const Classification now = classify_triangulation(shrunk[i], k, c.run.policy, method);
-        const std::string cmd_flags = "--kernel " + kname + " --incircle " + std::string(policy_name(c.run.policy));
+        const std::string cmd_flags =
+            "--kernel " + kname + " --incircle " + std::string(policy_name(c.run.policy));
         const std::vector<std::string> header{
             "exidel study triangulation fixture: " + describe(now),
             "kernel " + kname + ", incircle policy " + std::string(policy_name(c.run.policy)) +
                 (is_external(method) ? ", order " : ", algorithm ") + oname,
             "family " + std::string(testing::family_name(c.run.family)) + ", seed index " +
-                std::to_string(c.run.seed_index) + " of study seed " + std::to_string(run.seed) + ", " +
-                std::to_string(c.chunk->points.size()) + " points shrunk to " + std::to_string(shrunk[i].size()),
+                std::to_string(c.run.seed_index) + " of study seed " + std::to_string(run.seed) +
+                ", " + std::to_string(c.chunk->points.size()) + " points shrunk to " +
+                std::to_string(shrunk[i].size()),
             "reproduce: exidel study replay -i FILE " + cmd_flags + replay_order_flags(method),
             "      and: exidel triangulate -i FILE " + cmd_flags + triangulate_order_flags(method) +
                 (now.outcome == Outcome::failure ? "   (exit status 1: triangulation failed)"
                                                  : "   (output differs from --kernel exact)"),
         };
         write_text_file(run.out / file, fixture_text(shrunk[i], header));
-        study.fixtures.push_back({file, kname, c.run.policy, now, c.chunk->points.size(), shrunk[i].size(),
-                                  c.run.order, c.run.algorithm});
-        fixtures_table.rows.push_back(join(join({"`" + file + "`"}, method_cells(method)),
-                                           {kname, std::string(policy_name(c.run.policy)), describe(now),
-                                            std::to_string(shrunk[i].size()) + " (" +
-                                                std::to_string(c.chunk->points.size()) + ")",
-                                            now.outcome == c.run.result.outcome ? "yes" : "NO"}));
+        study.fixtures.push_back({file, kname, c.run.policy, now, c.chunk->points.size(),
+                                  shrunk[i].size(), c.run.order, c.run.algorithm});
+        fixtures_table.rows.push_back(join(
+            join({"`" + file + "`"}, method_cells(method)),
+            {kname, std::string(policy_name(c.run.policy)), describe(now),
+             std::to_string(shrunk[i].size()) + " (" + std::to_string(c.chunk->points.size()) + ")",
+             now.outcome == c.run.result.outcome ? "yes" : "NO"}));
     }
 
     write_text_file(run.out / "triangulation.csv", study.table.csv());
@@ -606,32 +631,42 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
     std::string sizes_text;
     for (std::size_t n : sizes) sizes_text += (sizes_text.empty() ? "" : ", ") + std::to_string(n);
     std::string orders_text;
-    for (delaunay::Strategy o : orders) orders_text += (orders_text.empty() ? "" : ", ") + std::string(delaunay::to_string(o));
+    for (delaunay::Strategy o : orders)
+        orders_text += (orders_text.empty() ? "" : ", ") + std::string(delaunay::to_string(o));
     std::string others_text;
     for (const Method& m : methods) {
-        if (!is_external(m)) others_text += ", and by the " + std::string(delaunay::to_string(m.algorithm)) + " algorithm";
+        if (!is_external(m))
+            others_text +=
+                ", and by the " + std::string(delaunay::to_string(m.algorithm)) + " algorithm";
     }
     study.report = Report("Triangulation outcomes per kernel and in-circle policy");
     std::string families_text;
     for (testing::Family f : families) {
         families_text += (families_text.empty() ? "" : ", ") + std::string(testing::family_name(f));
     }
-    if (families.size() == testing::all_families().size()) families_text = "Every family of lib/testing";
+    if (families.size() == testing::all_families().size())
+        families_text = "Every family of lib/testing";
     study.report.paragraph(
         families_text + ", " + std::to_string(seeds) + " point sets each (sizes " + sizes_text +
-        ", cycled; seed " + std::to_string(run.seed) + "); every kernel and both in-circle "
-        "policies triangulate the same point sets, in insertion order " + orders_text +
-        (orders.size() == 1 && orders.front() == delaunay::Strategy::lexicographic ? " (the paper's algorithm)" : "") +
+        ", cycled; seed " + std::to_string(run.seed) +
+        "); every kernel and both in-circle "
+        "policies triangulate the same point sets, in insertion order " +
+        orders_text +
+        (orders.size() == 1 && orders.front() == delaunay::Strategy::lexicographic
+             ? " (the paper's algorithm)"
+             : "") +
         others_text +
         ". Outcomes, decided by the exact certifier: "
         "**delaunay** (certified), **not_delaunay** (a valid triangulation with some edge not "
         "locally Delaunay), **invalid** (not a triangulation of the points; the certifier's first "
         "finding in the last column), **failure** (the algorithm detected the inconsistency and "
-        "stopped), **guard** (the predicate-call budget of 64 n^2 + 10^6 ran out; never expected).");
+        "stopped), **guard** (the predicate-call budget of 64 n^2 + 10^6 ran out; never "
+        "expected).");
     study.report.append(family_definitions(families));
     study.report.table(summary);
-    study.report.paragraph("Minimal failing inputs (delta debugging until no single point can be removed), "
-                           "written as fixtures in hex floats:");
+    study.report.paragraph(
+        "Minimal failing inputs (delta debugging until no single point can be removed), "
+        "written as fixtures in hex floats:");
     if (fixtures_table.rows.empty()) {
         study.report.paragraph("(no wrong outcome, nothing to shrink)");
     } else {
@@ -639,19 +674,29 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
     }
     study.report.heading("Work per insertion order");
     study.report.paragraph(
-        "The same point sets triangulated with the adaptive kernel (exact signs) and the determinant "
-        "policy in each insertion order: **lexicographic** (the paper's order), **radial** (ascending "
+        "The same point sets triangulated with the adaptive kernel (exact signs) and the "
+        "determinant "
+        "policy in each insertion order: **lexicographic** (the paper's order), **radial** "
+        "(ascending "
         "exact distance from the bounding-box centre) and **strips** (strips of " +
-        std::to_string(study_strip_points) + " points, each radial, merged by the Guibas-Stolfi zipper). "
-        "Per input point: flips (edges eroded by insertions plus edges deleted by merges), in-circle "
-        "tests and orientations of the algorithm (insertions and merges), and distance comparisons: the "
+        std::to_string(study_strip_points) +
+        " points, each radial, merged by the Guibas-Stolfi zipper). "
+        "Per input point: flips (edges eroded by insertions plus edges deleted by merges), "
+        "in-circle "
+        "tests and orientations of the algorithm (insertions and merges), and distance "
+        "comparisons: the "
         "compare_distance calls of the radial sort, made only where its floating-point key cannot "
-        "separate two points (counted by the kernel; the floating-point sort itself is not counted). "
-        "Algorithms that locate their points (bowyer-watson: a walk; randomized: a history DAG) add "
-        "location steps (triangles the walk entered, DAG nodes the descent passed) and their orientations "
+        "separate two points (counted by the kernel; the floating-point sort itself is not "
+        "counted). "
+        "Algorithms that locate their points (bowyer-watson: a walk; randomized: a history DAG) "
+        "add "
+        "location steps (triangles the walk entered, DAG nodes the descent passed) and their "
+        "orientations "
         "count among the orientations; triangles created counts finite triangles, de Berg et al.'s "
-        "quantity (at most 9n + 1 in expectation for the randomized algorithm, de Berg et al. 3rd ed., Section 9.4). "
-        "For bowyer-watson, flips are the edges inside each cavity (what a split and Lawson's flips "
+        "quantity (at most 9n + 1 in expectation for the randomized algorithm, de Berg et al. 3rd "
+        "ed., Section 9.4). "
+        "For bowyer-watson, flips are the edges inside each cavity (what a split and Lawson's "
+        "flips "
         "would have removed); for randomized, Lawson's flips. "
         "merges: strips merged over all sets; certified: results the exact certifier accepted.");
     study.report.table(work_table);
@@ -660,15 +705,18 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
     precision_table.header = method_header({}, {});
     for (unsigned b : bits) precision_table.header.push_back("p = " + std::to_string(b));
     LinePlot plot;
-    plot.title = "Triangulations not certified Delaunay, MPFR kernel at p bits (determinant policy)";
+    plot.title =
+        "Triangulations not certified Delaunay, MPFR kernel at p bits (determinant policy)";
     plot.x_label = "significand bits p";
     plot.y_label = "share of point sets with a wrong outcome";
     for (std::size_t op = 0; op < methods.size(); ++op) {
         std::vector<std::string> row = method_cells(methods[op]);
         Series series;
-        series.name = algorithm_column ? std::string(delaunay::to_string(methods[op].algorithm)) : "";
+        series.name =
+            algorithm_column ? std::string(delaunay::to_string(methods[op].algorithm)) : "";
         if (is_external(methods[op])) {
-            series.name += (series.name.empty() ? "" : " ") + std::string("(") + order_name(methods[op]) + ")";
+            series.name +=
+                (series.name.empty() ? "" : " ") + std::string("(") + order_name(methods[op]) + ")";
         }
         for (std::size_t b = 0; b < bits.size(); ++b) {
             const PrecisionRate& r = study.precision[op * bits.size() + b];
@@ -683,10 +731,13 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options, 
     write_text_file(run.out / "precision.svg", render_svg(plot));
     study.report.heading("Failure rate against precision");
     study.report.paragraph(
-        "The same point sets triangulated by each method with the MPFR kernel at p significand bits "
-        "(the input coordinates rounded to p bits as the kernel reads them, every operation rounded "
+        "The same point sets triangulated by each method with the MPFR kernel at p significand "
+        "bits "
+        "(the input coordinates rounded to p bits as the kernel reads them, every operation "
+        "rounded "
         "to p bits) and the determinant policy; a run counts as wrong when its outcome is anything "
-        "but certified Delaunay (not Delaunay, invalid, failure detected). Cells: wrong runs / point "
+        "but certified Delaunay (not Delaunay, invalid, failure detected). Cells: wrong runs / "
+        "point "
         "sets.");
     study.report.image("failure rate vs precision", "precision.svg");
     study.report.table(precision_table);

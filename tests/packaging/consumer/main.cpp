@@ -45,7 +45,8 @@ void check(const char* kernel) {
 // and the exact kernels' results are certified.
 void triangulate_with_every_kernel() {
     const exidel::Point2 square[] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-    for (const char* name : {"double", "long-double", "adaptive", "exact", "exact-cpp", "mpfr:64"}) {
+    for (const char* name :
+         {"double", "long-double", "adaptive", "exact", "exact-cpp", "mpfr:64"}) {
         std::string error;
         const std::optional<exidel::AnyKernel> kernel = exidel::parse_kernel(name, error);
         if (!kernel) {

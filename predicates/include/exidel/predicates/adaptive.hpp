@@ -66,8 +66,7 @@ static_assert(PredicateKernel3D<AdaptiveKernel>);
 /// Research instrument: the same predicates, also reporting which stage decided.
 Sign orient2d_staged(Point2 a, Point2 b, Point2 c, AdaptiveStage& stage);
 Sign incircle_staged(Point2 a, Point2 b, Point2 c, Point2 d, AdaptiveStage& stage);
-Sign incircle_cosine_staged(Point2 a, Point2 b, Point2 c, Point2 d,
-                            AdaptiveStage& stage);
+Sign incircle_cosine_staged(Point2 a, Point2 b, Point2 c, Point2 d, AdaptiveStage& stage);
 Sign compare_distance_staged(Point2 c, Point2 p, Point2 q, AdaptiveStage& stage);
 Sign orient3d_staged(Point3 a, Point3 b, Point3 c, Point3 d, AdaptiveStage& stage);
 Sign insphere_staged(Point3 a, Point3 b, Point3 c, Point3 d, Point3 e, AdaptiveStage& stage);

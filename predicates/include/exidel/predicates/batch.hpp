@@ -18,15 +18,14 @@
 
 namespace exidel::batch {
 
-void orient2d(std::span<const Point2> a, std::span<const Point2> b,
-              std::span<const Point2> c, std::span<Sign> out);
+void orient2d(std::span<const Point2> a, std::span<const Point2> b, std::span<const Point2> c,
+              std::span<Sign> out);
 
-void incircle(std::span<const Point2> a, std::span<const Point2> b,
-              std::span<const Point2> c, std::span<const Point2> d, std::span<Sign> out);
+void incircle(std::span<const Point2> a, std::span<const Point2> b, std::span<const Point2> c,
+              std::span<const Point2> d, std::span<Sign> out);
 
 void incircle_cosine(std::span<const Point2> a, std::span<const Point2> b,
-                     std::span<const Point2> c, std::span<const Point2> d,
-                     std::span<Sign> out);
+                     std::span<const Point2> c, std::span<const Point2> d, std::span<Sign> out);
 
 /// out[i] = sign(|p[i] - c[i]|^2 - |q[i] - c[i]|^2).
 void compare_distance(std::span<const Point2> c, std::span<const Point2> p,

@@ -15,11 +15,11 @@ namespace exidel {
 
 /// What circumcenter() found.
 enum class CircumcenterStatus : std::uint8_t {
-    ok,         ///< both coordinates are the nearest doubles to the exact circumcentre
-    collinear,  ///< a, b, c are collinear (or two coincide): no circle; point is NaN, NaN
-    overflow,   ///< a coordinate's exact value rounds beyond the largest double: that
-                ///< coordinate is +-infinity (round to nearest's answer), the other is
-                ///< still correctly rounded
+    ok,                ///< both coordinates are the nearest doubles to the exact circumcentre
+    collinear,         ///< a, b, c are collinear (or two coincide): no circle; point is NaN, NaN
+    overflow,          ///< a coordinate's exact value rounds beyond the largest double: that
+                       ///< coordinate is +-infinity (round to nearest's answer), the other is
+                       ///< still correctly rounded
     non_finite_input,  ///< a NaN or infinite coordinate; point is NaN, NaN
 };
 

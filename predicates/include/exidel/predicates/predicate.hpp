@@ -43,8 +43,7 @@ enum class SpacePredicate { EXIDEL_SPACE_PREDICATES(EXIDEL_PREDICATE_ENUMERATOR)
 /// Every predicate, in the order of the list.
 inline constexpr std::array all_predicates{
 #define EXIDEL_PREDICATE_VALUE(name, points) Predicate::name,
-    EXIDEL_PREDICATES(EXIDEL_PREDICATE_VALUE)
-};
+    EXIDEL_PREDICATES(EXIDEL_PREDICATE_VALUE)};
 inline constexpr std::array all_space_predicates{
 #define EXIDEL_SPACE_PREDICATE_VALUE(name, points) SpacePredicate::name,
     EXIDEL_SPACE_PREDICATES(EXIDEL_SPACE_PREDICATE_VALUE)
@@ -60,9 +59,12 @@ struct PredicateFacts {
 };
 #define EXIDEL_PREDICATE_FACTS(name, points) PredicateFacts{#name, points},
 inline constexpr PredicateFacts predicate_facts[] = {EXIDEL_PREDICATES(EXIDEL_PREDICATE_FACTS)};
-inline constexpr PredicateFacts space_predicate_facts[] = {EXIDEL_SPACE_PREDICATES(EXIDEL_PREDICATE_FACTS)};
+inline constexpr PredicateFacts space_predicate_facts[] = {
+    EXIDEL_SPACE_PREDICATES(EXIDEL_PREDICATE_FACTS)};
 #undef EXIDEL_PREDICATE_FACTS
-constexpr const PredicateFacts& facts(Predicate p) noexcept { return predicate_facts[static_cast<std::size_t>(p)]; }
+constexpr const PredicateFacts& facts(Predicate p) noexcept {
+    return predicate_facts[static_cast<std::size_t>(p)];
+}
 constexpr const PredicateFacts& facts(SpacePredicate p) noexcept {
     return space_predicate_facts[static_cast<std::size_t>(p)];
 }
@@ -70,7 +72,9 @@ constexpr const PredicateFacts& facts(SpacePredicate p) noexcept {
 
 /// The predicate's name, as the kernels' member and the query format spell it.
 constexpr std::string_view predicate_name(Predicate p) noexcept { return detail::facts(p).name; }
-constexpr std::string_view predicate_name(SpacePredicate p) noexcept { return detail::facts(p).name; }
+constexpr std::string_view predicate_name(SpacePredicate p) noexcept {
+    return detail::facts(p).name;
+}
 
 /// How many points the predicate takes: 3 for orient2d and compare_distance, 4 for the
 /// in-circle tests and orient3d, 5 for insphere.
@@ -114,7 +118,8 @@ template <PredicateKernel3D K>
 Sign evaluate(const K& k, SpacePredicate p, std::span<const Point3> args) {
     switch (p) {
         case SpacePredicate::orient3d: return k.orient3d(args[0], args[1], args[2], args[3]);
-        case SpacePredicate::insphere: return k.insphere(args[0], args[1], args[2], args[3], args[4]);
+        case SpacePredicate::insphere:
+            return k.insphere(args[0], args[1], args[2], args[3], args[4]);
     }
     return Sign::zero;  // unreachable: every enumerator is handled above
 }

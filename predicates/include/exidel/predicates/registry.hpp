@@ -51,8 +51,10 @@ struct Types {
 };
 template <class... A, class B>
 Types<A..., B> operator+(Types<A...>, Types<B>);
-#define EXIDEL_KERNEL_TYPE_(K, spelling, summary) +Types<K>{}
-using KernelTypes = decltype(Types<>{} EXIDEL_KERNELS(EXIDEL_KERNEL_TYPE_));
+#define EXIDEL_KERNEL_TYPE_(K, spelling, summary) \
+    +Types<K> {                                   \
+    }
+using KernelTypes = decltype(Types<> {} EXIDEL_KERNELS(EXIDEL_KERNEL_TYPE_));
 #undef EXIDEL_KERNEL_TYPE_
 }  // namespace detail
 

@@ -77,9 +77,9 @@ SortedHull sorted_convex_hull(std::span<const Point2> points, const K& k) {
         std::size_t steps = 0;  // guard: no walk may pass the whole hull
         const auto guard = [&](const char* what) {
             if (++steps <= size) return false;
-            r.failure = Failure{FailureKind::hull_walk_exceeded, in.input_of[p], p,
-                                std::string("sorted hull: ") + what + " walk at sorted point " +
-                                    std::to_string(p)};
+            r.failure = Failure{
+                FailureKind::hull_walk_exceeded, in.input_of[p], p,
+                std::string("sorted hull: ") + what + " walk at sorted point " + std::to_string(p)};
             return true;
         };
         if (to_left(p, prev[a1], a1) == Sign::positive) {

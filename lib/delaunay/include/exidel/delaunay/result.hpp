@@ -112,7 +112,9 @@ struct Counters {
 
     /// Edge flips in the incremental view plus edges deleted by merges plus Lawson flips:
     /// the work that depends on the insertion order.
-    std::uint64_t flips() const noexcept { return eroded_edges + merge_deleted_edges + lawson_flips; }
+    std::uint64_t flips() const noexcept {
+        return eroded_edges + merge_deleted_edges + lawson_flips;
+    }
     Counters& operator+=(const Counters& o) noexcept;
 };
 
@@ -146,7 +148,7 @@ struct Failure {
     /// Its position in the insertion order (the insertion step); no_index for failures
     /// of a merge or of the finished structure, which belong to no single insertion.
     std::size_t insertion = no_index;
-    std::string message;                 ///< where it happened, in words
+    std::string message;  ///< where it happened, in words
 };
 
 /// A triangulation in compact index arrays (the layout of delaunator).
@@ -187,9 +189,10 @@ struct Result {
     Triangulation triangulation;  ///< meaningful only when ok()
     Counters counters;            ///< zero unless instrumented
     std::optional<Failure> failure;
-    Algorithm algorithm = Algorithm::external;    ///< the algorithm that ran
-    Strategy strategy = Strategy::lexicographic;  ///< external: the strategy that ran (never automatic)
-    std::size_t strips = 1;  ///< pieces merged (1 unless strips ran): strips, or their tiles
+    Algorithm algorithm = Algorithm::external;  ///< the algorithm that ran
+    Strategy strategy =
+        Strategy::lexicographic;  ///< external: the strategy that ran (never automatic)
+    std::size_t strips = 1;       ///< pieces merged (1 unless strips ran): strips, or their tiles
     bool ok() const noexcept { return !failure.has_value(); }
 };
 
@@ -197,8 +200,8 @@ namespace detail {
 
 /// Points sorted lexicographically (x, then y) with exact duplicates removed.
 struct SortedInput {
-    FreshVector<Point2> points;              ///< distinct, increasing
-    FreshVector<std::uint32_t> input_of;     ///< sorted position -> input index (first occurrence)
+    FreshVector<Point2> points;           ///< distinct, increasing
+    FreshVector<std::uint32_t> input_of;  ///< sorted position -> input index (first occurrence)
     std::vector<std::uint32_t> vertex_of_input;
     std::vector<std::uint32_t> duplicates;
 };

@@ -41,10 +41,8 @@ Result run_algorithm(const K& kernel, SortedInput& in, const Options& options) {
     result.algorithm = options.algorithm;
     MeshOutput out;
     switch (options.algorithm) {
-#define EXIDEL_RUN_ALGORITHM_(name, spelling, Type, takes_order, summary)            \
-    case Algorithm::name:                                                \
-        Type::template run<K, I, P>(kernel, in, options, out, result);   \
-        break;
+#define EXIDEL_RUN_ALGORITHM_(name, spelling, Type, takes_order, summary) \
+    case Algorithm::name: Type::template run<K, I, P>(kernel, in, options, out, result); break;
         EXIDEL_DELAUNAY_ALGORITHMS(EXIDEL_RUN_ALGORITHM_)
 #undef EXIDEL_RUN_ALGORITHM_
         default:
@@ -56,12 +54,14 @@ Result run_algorithm(const K& kernel, SortedInput& in, const Options& options) {
     if (!result.failure) {
         if (out.mesh.collinear) {
             tri.collinear = true;
-            tri.hull.assign(in.input_of.begin(), in.input_of.end());  // the chain, lexicographically
+            tri.hull.assign(in.input_of.begin(),
+                            in.input_of.end());  // the chain, lexicographically
         } else {
-            result.failure = to_triangulation(
-                out.mesh, out.input_of.empty() ? std::span<const std::uint32_t>(in.input_of)
-                                               : std::span<const std::uint32_t>(out.input_of),
-                out.first, tri, options.threads);
+            result.failure = to_triangulation(out.mesh,
+                                              out.input_of.empty()
+                                                  ? std::span<const std::uint32_t>(in.input_of)
+                                                  : std::span<const std::uint32_t>(out.input_of),
+                                              out.first, tri, options.threads);
         }
     }
     tri.vertex_of_input = std::move(in.vertex_of_input);
@@ -129,11 +129,11 @@ Result triangulate(std::span<const Point2> points, const K& kernel, const Option
 // Compiled once in the library for every kernel of the registry
 // (exidel/predicates/registry.hpp), uninstrumented and with counters. Instrumentation::
 // theorem1 is not: the tests that use it instantiate it.
-#define EXIDEL_DELAUNAY_EXTERN(K, spelling, summary)                                      \
-    extern template Result triangulate<Instrumentation::off, K>(std::span<const Point2>,  \
-                                                                 const K&, const Options&); \
-    extern template Result triangulate<Instrumentation::counters, K>(                     \
-        std::span<const Point2>, const K&, const Options&);
+#define EXIDEL_DELAUNAY_EXTERN(K, spelling, summary)                                               \
+    extern template Result triangulate<Instrumentation::off, K>(std::span<const Point2>, const K&, \
+                                                                const Options&);                   \
+    extern template Result triangulate<Instrumentation::counters, K>(std::span<const Point2>,      \
+                                                                     const K&, const Options&);
 EXIDEL_KERNELS(EXIDEL_DELAUNAY_EXTERN)
 #undef EXIDEL_DELAUNAY_EXTERN
 

@@ -78,7 +78,6 @@ struct VoronoiDiagram : VoronoiCells {
     std::uint64_t stage_counts[3] = {0, 0, 0};
     std::uint64_t cocircular_tests = 0;
     std::uint64_t cocircular_merges = 0;
-
 };
 
 /// A Delaunay triangle whose centre cannot be a vertex: its exact centre is beyond the
@@ -115,7 +114,6 @@ struct Box {
 struct ClippedVoronoi : VoronoiCells {
     /// How many of the vertices are Voronoi vertices (the rest the box added).
     std::size_t voronoi_vertex_count = 0;
-
 };
 
 /// `d` (the diagram of `points`, triangulated by `t`) clipped to `box`. Throws

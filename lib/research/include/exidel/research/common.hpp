@@ -68,9 +68,9 @@ std::mutex& rapidcheck_mutex();
 struct RunOptions {
     std::uint64_t seed = 20250704;  ///< printed in every report; the run is a function of it
     std::filesystem::path out = "exidel-study";
-    unsigned jobs = 1;          ///< threads; results do not depend on it
-    bool quick = false;         ///< the short preset (study all --quick, the tests)
-    bool progress = true;       ///< allow the progress bar (still only on a terminal)
+    unsigned jobs = 1;            ///< threads; results do not depend on it
+    bool quick = false;           ///< the short preset (study all --quick, the tests)
+    bool progress = true;         ///< allow the progress bar (still only on a terminal)
     std::ostream* log = nullptr;  ///< summary lines (stdout in the CLI); null: silent
     /// The command line that reproduces this run's files, printed at the top of its report
     /// (run_header). The CLI sets it from the options given; run_all_studies composes its
@@ -88,9 +88,10 @@ std::string shell_quote(std::string_view s);
 // ---------------------------------------------------------------------------------
 // Progress bar.
 
-/// A one-line progress bar on stderr: done/total, the rate so far and the time left at it. Drawn only when stderr is a terminal, progress is
-/// allowed, and the work has already taken a second (short runs stay silent). advance()
-/// is thread-safe and cheap: redraws are limited to ten per second.
+/// A one-line progress bar on stderr: done/total, the rate so far and the time left at it. Drawn
+/// only when stderr is a terminal, progress is allowed, and the work has already taken a second
+/// (short runs stay silent). advance() is thread-safe and cheap: redraws are limited to ten per
+/// second.
 class Progress {
 public:
     Progress(std::string label, std::size_t total, bool allowed);
@@ -158,7 +159,9 @@ public:
     void standalone_paragraph(std::string text) {
         blocks_.push_back({Kind::paragraph, std::move(text), "", true});
     }
-    void standalone_table(const Table& t) { blocks_.push_back({Kind::table, t.markdown(), "", true}); }
+    void standalone_table(const Table& t) {
+        blocks_.push_back({Kind::table, t.markdown(), "", true});
+    }
     /// Appends the blocks (not the title) of another report.
     void append(const Report& other) {
         blocks_.insert(blocks_.end(), other.blocks_.begin(), other.blocks_.end());

@@ -69,8 +69,8 @@ inline constexpr std::size_t fuzz_block_queries = 256;  ///< queries per drawn p
 inline constexpr std::size_t fuzz_set_points = 16;      ///< points per drawn set
 
 struct PredicateFuzzOptions {
-    std::string kernel = "adaptive";       ///< the kernel checked (a registry spelling)
-    std::string reference = "exact";       ///< the kernel it is checked against
+    std::string kernel = "adaptive";        ///< the kernel checked (a registry spelling)
+    std::string reference = "exact";        ///< the kernel it is checked against
     std::vector<testing::Family> families;  ///< empty: every family
     std::vector<Predicate> predicates;      ///< empty: every predicate
     std::uint64_t queries = 1'000'000;
@@ -94,9 +94,9 @@ struct Disagreement {
     std::uint64_t index = 0;  ///< its number in the campaign
     testing::Family family{};
     Predicate predicate{};
-    std::array<Point2, 4> query{};   ///< as drawn (point_count(predicate) points used)
-    std::array<Point2, 4> shrunk{};  ///< the simplest query found that still disagrees
-    Sign kernel_sign{}, reference_sign{};                ///< on the query as drawn
+    std::array<Point2, 4> query{};         ///< as drawn (point_count(predicate) points used)
+    std::array<Point2, 4> shrunk{};        ///< the simplest query found that still disagrees
+    Sign kernel_sign{}, reference_sign{};  ///< on the query as drawn
     Sign shrunk_kernel_sign{}, shrunk_reference_sign{};  ///< on the shrunk query
     std::size_t shrink_steps = 0;
 };
@@ -138,10 +138,10 @@ std::string summary_json(const PredicateFuzzResult& result);
 
 struct TriangulationFuzzOptions {
     std::string kernel = "adaptive";
-    std::vector<testing::Family> families;            ///< empty: every family
-    std::vector<delaunay::Algorithm> algorithms;      ///< empty: every algorithm
-    std::vector<delaunay::Strategy> orders;           ///< the external algorithm's; empty: all_orders
-    std::vector<delaunay::InCirclePolicy> policies;   ///< empty: determinant and cosine
+    std::vector<testing::Family> families;        ///< empty: every family
+    std::vector<delaunay::Algorithm> algorithms;  ///< empty: every algorithm
+    std::vector<delaunay::Strategy> orders;       ///< the external algorithm's; empty: all_orders
+    std::vector<delaunay::InCirclePolicy> policies;  ///< empty: determinant and cosine
     std::size_t min_points = 3, max_points = 100;
     std::uint64_t sets = 10'000;
     std::uint64_t seed = 20250704;
@@ -160,8 +160,8 @@ struct TriangulationFinding {
     testing::Family family{};
     Method method;
     delaunay::InCirclePolicy policy{};
-    Classification outcome;           ///< of the set as drawn
-    std::size_t points = 0;           ///< size of the set as drawn
+    Classification outcome;  ///< of the set as drawn
+    std::size_t points = 0;  ///< size of the set as drawn
     std::vector<Point2> shrunk;
     Classification shrunk_outcome;
     std::string file;  ///< the fixture, relative to options.out (empty: not written)
@@ -188,7 +188,8 @@ std::string method_label(const Method& m);
 
 /// Runs the campaign on `team`; the result (and the fixture files) on rank 0, as
 /// fuzz_predicates.
-TriangulationFuzzResult fuzz_triangulations(const TriangulationFuzzOptions& options, Team& team = Team::solo());
+TriangulationFuzzResult fuzz_triangulations(const TriangulationFuzzOptions& options,
+                                            Team& team = Team::solo());
 
 /// The summary as JSON: "triangulations", "wrong", "problems", the outcomes per family,
 /// per method and per policy, the fixtures, and "seconds" and "run".

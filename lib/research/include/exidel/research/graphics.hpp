@@ -22,7 +22,8 @@ struct Image {
     std::vector<Rgb> pixels;  ///< width * height, row-major
 
     Image() = default;
-    Image(int w, int h, Rgb fill) : width(w), height(h), pixels(std::size_t(w) * std::size_t(h), fill) {}
+    Image(int w, int h, Rgb fill)
+        : width(w), height(h), pixels(std::size_t(w) * std::size_t(h), fill) {}
     Rgb& at(int x, int y) { return pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
     const Rgb& at(int x, int y) const {
         return pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)];

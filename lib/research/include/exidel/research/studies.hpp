@@ -39,20 +39,23 @@ namespace exidel::research {
 /// and uses `points3`, and its moving point moves in the plane of its two coordinates
 /// `axes` (0: x, 1: y, 2: z), the third one keeping its value.
 struct FailureMapSpec {
-    std::string name;                 ///< preset name, or "custom"
+    std::string name;  ///< preset name, or "custom"
     std::string description;
     Formulation formulation = Formulation::orient2d;
-    std::vector<Point2> points;       ///< point_count(formulation) points (plane maps)
+    std::vector<Point2> points;           ///< point_count(formulation) points (plane maps)
     std::optional<SpacePredicate> space;  ///< set: a map of orient3d or insphere
-    std::vector<Point3> points3;      ///< point_count(*space) points (space maps)
-    std::array<int, 2> axes{0, 1};    ///< the moving point's coordinates on the map's x and y (space maps)
-    std::size_t pivot = 0;            ///< index into the points of the point that moves
-    std::vector<std::size_t> order;   ///< argument i of the predicate is points[order[i]]
+    std::vector<Point3> points3;          ///< point_count(*space) points (space maps)
+    std::array<int, 2> axes{
+        0, 1};              ///< the moving point's coordinates on the map's x and y (space maps)
+    std::size_t pivot = 0;  ///< index into the points of the point that moves
+    std::vector<std::size_t> order;  ///< argument i of the predicate is points[order[i]]
     int width = 256, height = 256;
-    std::int64_t step = 1;            ///< ulps per cell
-    bool centered = false;            ///< window [-W/2, W/2) instead of [0, W)
+    std::int64_t step = 1;  ///< ulps per cell
+    bool centered = false;  ///< window [-W/2, W/2) instead of [0, W)
 
-    std::string_view predicate() const { return space ? predicate_name(*space) : predicate_name(formulation); }
+    std::string_view predicate() const {
+        return space ? predicate_name(*space) : predicate_name(formulation);
+    }
     std::size_t arity() const { return space ? point_count(*space) : point_count(formulation); }
 };
 
@@ -91,10 +94,10 @@ FailureMap compute_failure_map(const FailureMapSpec& spec, const Kernel& kernel,
 
 /// Where render_failure_map puts things, a function of the map's size only.
 struct FailureMapLayout {
-    int width = 0, height = 0;      ///< the whole picture
-    int cell = 1;                   ///< pixels per cell side
-    int panel_x[3] = {};            ///< left edge of each panel
-    int panel_y = 0;                ///< top edge of the panels
+    int width = 0, height = 0;  ///< the whole picture
+    int cell = 1;               ///< pixels per cell side
+    int panel_x[3] = {};        ///< left edge of each panel
+    int panel_y = 0;            ///< top edge of the panels
     int panel_width = 0, panel_height = 0;
 };
 FailureMapLayout failure_map_layout(int width, int height);
@@ -107,9 +110,9 @@ FailureMapLayout failure_map_layout(int width, int height);
 Image render_failure_map(const FailureMap& map);
 
 struct FailureMapOptions {
-    std::vector<FailureMapSpec> specs;   ///< empty: the default preset list
-    std::vector<std::string> kernels;    ///< empty: double, long-double, mpfr:64, adaptive, exact
-    std::optional<int> width, height;    ///< override every spec's window
+    std::vector<FailureMapSpec> specs;  ///< empty: the default preset list
+    std::vector<std::string> kernels;   ///< empty: double, long-double, mpfr:64, adaptive, exact
+    std::optional<int> width, height;   ///< override every spec's window
 };
 
 struct FailureMapRow {
@@ -133,9 +136,9 @@ FailureMapStudy run_failure_map_study(const FailureMapOptions& options, const Ru
 // precision
 
 struct PrecisionOptions {
-    std::vector<unsigned> bits;                  ///< empty: 24..128 by 8 (with 53, 64), then 160..512
-    std::vector<testing::Family> families;       ///< empty: the near-degenerate families
-    std::size_t samples = 0;                     ///< queries per family and formulation; 0: default
+    std::vector<unsigned> bits;             ///< empty: 24..128 by 8 (with 53, 64), then 160..512
+    std::vector<testing::Family> families;  ///< empty: the near-degenerate families
+    std::size_t samples = 0;                ///< queries per family and formulation; 0: default
 };
 
 struct PrecisionCell {
@@ -173,8 +176,8 @@ struct Classification {
 /// The insertion orders a study runs: every delaunay::Strategy but `automatic` (which
 /// only picks one of them by input size). lexicographic is the paper's algorithm and the
 /// default subject of the triangulation study.
-inline constexpr std::array all_orders{delaunay::Strategy::lexicographic, delaunay::Strategy::radial,
-                                       delaunay::Strategy::strips};
+inline constexpr std::array all_orders{delaunay::Strategy::lexicographic,
+                                       delaunay::Strategy::radial, delaunay::Strategy::strips};
 
 /// Points per strip whenever a study runs the strips order: small, so that the study's
 /// point sets (tens to hundreds of points) are cut into several strips and the merges,
@@ -185,8 +188,10 @@ inline constexpr std::size_t study_strip_points = 64;
 /// for the external algorithm, its insertion order (ignored by the others). Converts from
 /// an order alone: the external algorithm in that order, the subject of every study.
 struct Method {
-    Method(delaunay::Strategy order = delaunay::Strategy::lexicographic) : order(order) {}  // NOLINT
-    Method(delaunay::Algorithm algorithm, delaunay::Strategy order) : algorithm(algorithm), order(order) {}
+    Method(delaunay::Strategy order = delaunay::Strategy::lexicographic)
+        : order(order) {}  // NOLINT
+    Method(delaunay::Algorithm algorithm, delaunay::Strategy order)
+        : algorithm(algorithm), order(order) {}
     delaunay::Algorithm algorithm = delaunay::Algorithm::external;
     delaunay::Strategy order = delaunay::Strategy::lexicographic;
     bool operator==(const Method&) const = default;
@@ -236,11 +241,12 @@ std::vector<Point2> shrink_failing_input(std::vector<Point2> points, const Kerne
 std::string fixture_text(std::span<const Point2> points, std::span<const std::string> header);
 
 struct TriangulationOptions {
-    std::vector<std::string> kernels;            ///< empty: double, long-double, mpfr:53, mpfr:106, adaptive, exact
-    std::vector<testing::Family> families;       ///< empty: every family
-    std::size_t seeds = 0;                       ///< point sets per family; 0: default
-    std::vector<std::size_t> sizes;              ///< empty: 50, 100, 200, 500 (cycled over seeds)
-    std::size_t shrink_per_class = 2;            ///< fixtures per (order, kernel, policy, outcome)
+    std::vector<std::string>
+        kernels;  ///< empty: double, long-double, mpfr:53, mpfr:106, adaptive, exact
+    std::vector<testing::Family> families;  ///< empty: every family
+    std::size_t seeds = 0;                  ///< point sets per family; 0: default
+    std::vector<std::size_t> sizes;         ///< empty: 50, 100, 200, 500 (cycled over seeds)
+    std::size_t shrink_per_class = 2;       ///< fixtures per (order, kernel, policy, outcome)
     /// Insertion orders for the outcome tables and fixtures; empty: lexicographic only
     /// (the paper's algorithm). The work table always runs all_orders.
     std::vector<delaunay::Strategy> orders;
@@ -322,7 +328,8 @@ inline constexpr auto stage_predicates = all_predicates;
 inline constexpr std::size_t compare_distance_row = std::size_t(Predicate::compare_distance);
 
 /// Counts per predicate (stage_predicates) and AdaptiveStage.
-using StageCounts = std::array<std::array<std::uint64_t, adaptive_stage_count>, stage_predicates.size()>;
+using StageCounts =
+    std::array<std::array<std::uint64_t, adaptive_stage_count>, stage_predicates.size()>;
 
 /// The adaptive kernel, counting which stage decided each call: a PredicateKernel, so
 /// the triangulation template runs with it unchanged.

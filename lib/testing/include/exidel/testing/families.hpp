@@ -126,14 +126,17 @@ inline rc::Gen<std::vector<Point2>> gen_points(Family f, std::size_t n) {
         case Family::lattice_circle: return gen_lattice_circle_points(n);
         case Family::dyadic_line: return gen_dyadic_line_points(n);
         case Family::near_integer_grid:
-            return rc::gen::mapcat(gen_integer_grid_points(n),
-                                   [](std::vector<Point2> p) { return gen_nudged(std::move(p), 4); });
+            return rc::gen::mapcat(gen_integer_grid_points(n), [](std::vector<Point2> p) {
+                return gen_nudged(std::move(p), 4);
+            });
         case Family::near_lattice_circle:
-            return rc::gen::mapcat(gen_lattice_circle_points(n),
-                                   [](std::vector<Point2> p) { return gen_nudged(std::move(p), 4); });
+            return rc::gen::mapcat(gen_lattice_circle_points(n), [](std::vector<Point2> p) {
+                return gen_nudged(std::move(p), 4);
+            });
         case Family::near_dyadic_line:
-            return rc::gen::mapcat(gen_dyadic_line_points(n),
-                                   [](std::vector<Point2> p) { return gen_nudged(std::move(p), 4); });
+            return rc::gen::mapcat(gen_dyadic_line_points(n), [](std::vector<Point2> p) {
+                return gen_nudged(std::move(p), 4);
+            });
         case Family::near_rounded_line: return gen_rounded_line_points(n);
         case Family::near_rounded_circle: return gen_rounded_circle_points(n);
         case Family::kettner: return gen_kettner_points(n);
@@ -178,8 +181,8 @@ bool cosine_precondition_holds(const Query4& q, const K& k = {}) {
 template <class K = GmpExactKernel>
 Query4 arrange_for_cosine(const Query4& q, const K& k = {}) {
     // The pair (a, b) among the six pairs of indices; c and d are the other two.
-    constexpr std::array<std::array<int, 4>, 6> orders{{
-        {0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2}, {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}}};
+    constexpr std::array<std::array<int, 4>, 6> orders{
+        {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2}, {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}}};
     for (const auto& o : orders) {
         const Query4 r{q[o[0]], q[o[1]], q[o[2]], q[o[3]]};
         if (cosine_precondition_holds(r, k)) return r;

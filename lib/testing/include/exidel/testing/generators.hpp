@@ -10,8 +10,8 @@
 // exactly degenerate input, or to the fewest ulps away from one that still fails.
 //
 // Why no plain arithmetic on doubles: a caller compiled with contraction on would fuse
-// a*b+c and generate different points from the same seed (docs/background.md section 2). The helpers in
-// ulp.hpp are exact or round once by definition, and the only inexact step used here is
+// a*b+c and generate different points from the same seed (docs/background.md section 2). The
+// helpers in ulp.hpp are exact or round once by definition, and the only inexact step used here is
 // an explicit std::fma, which rounds once under every compiler flag.
 #pragma once
 
@@ -61,8 +61,7 @@ inline constexpr int min_exact_scale = -1074;
 /// A double on the grid 2^-53 in [-1, 1]: uniform over the 2^54 + 1 grid values.
 inline rc::Gen<double> gen_unit_coordinate() {
     constexpr std::int64_t one = std::int64_t{1} << 53;
-    return rc::gen::map(gen_toward_zero(-one, one),
-                        [](std::int64_t m) { return dyadic(m, -53); });
+    return rc::gen::map(gen_toward_zero(-one, one), [](std::int64_t m) { return dyadic(m, -53); });
 }
 
 /// A point uniform in the box [-2^k, 2^k]^2 (grid 2^(k-53), rounded once by std::ldexp
@@ -88,8 +87,7 @@ inline rc::Gen<double> gen_any_finite_double() {
 }
 
 /// Each coordinate of each point moved by up to max_steps ulps (shrinking toward none).
-inline rc::Gen<std::vector<Point2>> gen_nudged(std::vector<Point2> points,
-                                               std::int64_t max_steps) {
+inline rc::Gen<std::vector<Point2>> gen_nudged(std::vector<Point2> points, std::int64_t max_steps) {
     return rc::gen::exec([points = std::move(points), max_steps] {
         std::vector<Point2> moved = points;
         for (Point2& p : moved) {
@@ -103,8 +101,8 @@ inline rc::Gen<std::vector<Point2>> gen_nudged(std::vector<Point2> points,
 
 /// Integer points translated by the integer vector t and scaled by 2^k. Exact as long
 /// as every |coordinate + t| < 2^53 and k is in [min_exact_scale, max_scale_for_bits].
-inline std::vector<Point2> place(const std::vector<LatticePoint>& integer_points,
-                                 LatticePoint t, int k) {
+inline std::vector<Point2> place(const std::vector<LatticePoint>& integer_points, LatticePoint t,
+                                 int k) {
     std::vector<Point2> out;
     out.reserve(integer_points.size());
     for (const auto& [x, y] : integer_points) {
@@ -220,14 +218,16 @@ inline rc::Gen<std::vector<Point2>> gen_rounded_line_points(std::size_t n) {
 inline rc::Gen<std::vector<Point2>> gen_rounded_circle_points(std::size_t n) {
     return rc::gen::exec([n] {
         const Point2 c = *gen_point_in_box(*rc::gen::inRange(0, 31));
-        const double r = dyadic(*rc::gen::inRange<std::int64_t>(std::int64_t{1} << 50,
-                                                               (std::int64_t{1} << 53) + 1),
-                                -53);
+        const double r = dyadic(
+            *rc::gen::inRange<std::int64_t>(std::int64_t{1} << 50, (std::int64_t{1} << 53) + 1),
+            -53);
         std::vector<Point2> points;
         for (std::size_t i = 0; i < n; ++i) {
             // theta in [0, 6.5): a dyadic angle, so the same on every platform's input side.
-            const double theta = dyadic(*rc::gen::inRange<std::int64_t>(0, std::int64_t{13} << 40), -41);
-            points.push_back({std::fma(r, std::cos(theta), c.x), std::fma(r, std::sin(theta), c.y)});
+            const double theta =
+                dyadic(*rc::gen::inRange<std::int64_t>(0, std::int64_t{13} << 40), -41);
+            points.push_back(
+                {std::fma(r, std::cos(theta), c.x), std::fma(r, std::sin(theta), c.y)});
         }
         const int k = *gen_scale_exponent(-900, 900);
         std::vector<Point2> scaled = *gen_nudged(std::move(points), 4);
@@ -257,9 +257,8 @@ inline rc::Gen<std::vector<Point2>> gen_kettner_points(std::size_t n) {
         const std::int64_t j = *rc::gen::inRange<std::int64_t>(0, 256);
         std::vector<Point2> points{nudge(config[0], i, j), config[1], config[2]};
         while (points.size() < n) {
-            const double v = dyadic(*rc::gen::inRange<std::int64_t>(std::int64_t{1} << 46,
-                                                                   std::int64_t{1} << 51),
-                                    -47);
+            const double v = dyadic(
+                *rc::gen::inRange<std::int64_t>(std::int64_t{1} << 46, std::int64_t{1} << 51), -47);
             points.push_back({v, v});
         }
         points.resize(n);

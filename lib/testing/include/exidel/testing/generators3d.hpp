@@ -28,8 +28,8 @@ namespace exidel {
 /// RapidCheck's customization point for points of space (hex floats, then decimals).
 inline void showValue(const Point3& p, std::ostream& os) {
     char buf[192];
-    std::snprintf(buf, sizeof buf, "{%a, %a, %a} (%.17g, %.17g, %.17g)", p.x, p.y, p.z, p.x,
-                  p.y, p.z);
+    std::snprintf(buf, sizeof buf, "{%a, %a, %a} (%.17g, %.17g, %.17g)", p.x, p.y, p.z, p.x, p.y,
+                  p.z);
     os << buf;
 }
 
@@ -139,8 +139,7 @@ inline rc::Gen<std::vector<Point3>> gen_coplanar_near_points(std::size_t n) {
 /// the quaternion parametrisation (Euler's four-square identity): (m^2 + n^2 - p^2 - q^2,
 /// 2 (m q + n p), 2 (n q - m p)) has squared length s^2. Permuting and negating the four
 /// integers keeps s, so one quadruple gives up to 384 points of the same sphere.
-inline LatticePoint3 sphere_point(std::int64_t m, std::int64_t n, std::int64_t p,
-                                  std::int64_t q) {
+inline LatticePoint3 sphere_point(std::int64_t m, std::int64_t n, std::int64_t p, std::int64_t q) {
     return {m * m + n * n - p * p - q * q, 2 * (m * q + n * p), 2 * (n * q - m * p)};
 }
 

@@ -28,8 +28,8 @@ namespace detail {
 struct GaussianPrime {
     std::int64_t p, a, b;  // p = a^2 + b^2
 };
-inline constexpr std::array<GaussianPrime, lattice_prime_count> gaussian_primes{{
-    {5, 1, 2}, {13, 2, 3}, {17, 1, 4}, {29, 2, 5}, {37, 1, 6}, {41, 4, 5}}};
+inline constexpr std::array<GaussianPrime, lattice_prime_count> gaussian_primes{
+    {{5, 1, 2}, {13, 2, 3}, {17, 1, 4}, {29, 2, 5}, {37, 1, 6}, {41, 4, 5}}};
 }  // namespace detail
 
 /// An integer point (x, y).

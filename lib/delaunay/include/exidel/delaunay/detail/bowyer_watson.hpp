@@ -72,7 +72,10 @@ public:
     /// `pts` distinct, in insertion order; `input_of` maps a position to its input index.
     /// run() may swap the third point of the first triangle into position 2 (both spans).
     CavityInserter(const K& kernel, std::span<Point2> pts, std::span<std::uint32_t> input_of)
-        : k_(kernel), pts_(pts), input_of_(input_of), inf_(static_cast<std::uint32_t>(pts.size())) {}
+        : k_(kernel),
+          pts_(pts),
+          input_of_(input_of),
+          inf_(static_cast<std::uint32_t>(pts.size())) {}
 
     /// Builds into `mesh` (replaced). On failure the mesh is meaningless.
     std::optional<Failure> run(Mesh& mesh) {
@@ -83,7 +86,7 @@ public:
             return std::nullopt;
         }
         m_ = &mesh;
-        mesh.reset(n + 1);  // ids 0..n-1 and inf = n
+        mesh.reset(n + 1);            // ids 0..n-1 and inf = n
         mark_.assign(2 * n + 16, 0);  // a sphere of n + 1 vertices has 2n - 2 triangles
         vertex_stamp_.assign(n + 1, 0);
         next_on_boundary_.assign(n + 1, 0);
@@ -195,12 +198,14 @@ private:
             // The ghost's finite half-edge x -> y: its hull edge is y -> x, and p conflicts
             // when strictly beyond that (on the left of x -> y) or on its open segment.
             std::size_t e = 3 * t;
-            for (unsigned j = 0; j < 2 && (tris[e] == inf_ || tris[next_halfedge(e)] == inf_); ++j) {
+            for (unsigned j = 0; j < 2 && (tris[e] == inf_ || tris[next_halfedge(e)] == inf_);
+                 ++j) {
                 e = next_halfedge(e);
             }
             const std::uint32_t x = tris[e], y = tris[next_halfedge(e)];
             const Sign s = orient(&Counters::cavity_orientations, x, y, p);
-            return s == Sign::positive || (s == Sign::zero && strictly_between(pts_[x], pts_[y], p));
+            return s == Sign::positive ||
+                   (s == Sign::zero && strictly_between(pts_[x], pts_[y], p));
         }
         const Point2 x = pts_[tris[shared]], y = pts_[tris[next_halfedge(shared)]];
         const Point2 d = pts_[tris[prev_halfedge(shared)]];  // on the left of x -> y
@@ -242,7 +247,9 @@ private:
             cavity_.push_back(c);
             for (std::size_t e = 3 * std::size_t{c}; e < 3 * std::size_t{c} + 3; ++e) {
                 const std::int32_t h = m.halfedges[e];
-                if (h < 0) return fail(FailureKind::cavity_inconsistent, i, "a cavity triangle has an open edge");
+                if (h < 0)
+                    return fail(FailureKind::cavity_inconsistent, i,
+                                "a cavity triangle has an open edge");
                 const auto t = static_cast<std::uint32_t>(h / 3);
                 std::uint64_t& tm = mark(t);
                 if (tm == in) {
@@ -279,12 +286,14 @@ private:
         std::uint32_t v = boundary_.front().u;
         for (std::size_t k = 0; k < boundary_.size(); ++k) {
             if (vertex_stamp_[v] != stamp_ || (k > 0 && v == boundary_.front().u)) {
-                return fail(FailureKind::cavity_inconsistent, i, "the cavity's boundary is not one cycle");
+                return fail(FailureKind::cavity_inconsistent, i,
+                            "the cavity's boundary is not one cycle");
             }
             v = next_on_boundary_[v];
         }
         if (v != boundary_.front().u || boundary_.size() < 3) {
-            return fail(FailureKind::cavity_inconsistent, i, "the cavity's boundary is not one cycle");
+            return fail(FailureKind::cavity_inconsistent, i,
+                        "the cavity's boundary is not one cycle");
         }
 
         // Step 3: the cavity's triangles go, p is joined to each boundary edge.
@@ -320,7 +329,8 @@ private:
                 if (m.triangles[e] == inf_ || m.triangles[next_halfedge(e)] == inf_) continue;
                 // a -> b, finite (a ghost's finite edge always borders a finite triangle:
                 // a cavity's boundary cycle has at least three vertices, inf once).
-                if (m.halfedges[e] < 0 || is_ghost(static_cast<std::size_t>(m.halfedges[e]) / 3)) continue;
+                if (m.halfedges[e] < 0 || is_ghost(static_cast<std::size_t>(m.halfedges[e]) / 3))
+                    continue;
                 const auto f = static_cast<std::size_t>(m.halfedges[e]);
                 const std::uint32_t a = m.triangles[f], b = m.triangles[next_halfedge(f)];
                 m.set_hull_next(a, b);
@@ -337,13 +347,13 @@ private:
     std::span<std::uint32_t> input_of_;
     const std::uint32_t inf_;
     Mesh* m_ = nullptr;
-    std::uint32_t last_ = 0;     // a finite triangle made by the last insertion
-    unsigned rotation_ = 0;      // the walk's first edge, rotating
-    std::uint64_t stamp_ = 0;    // one per insertion
+    std::uint32_t last_ = 0;   // a finite triangle made by the last insertion
+    unsigned rotation_ = 0;    // the walk's first edge, rotating
+    std::uint64_t stamp_ = 0;  // one per insertion
     std::vector<std::uint64_t> mark_;
-    std::vector<std::uint64_t> vertex_stamp_;       // vertex -> stamp when on the boundary
-    std::vector<std::uint32_t> next_on_boundary_;   // vertex u -> v of its boundary edge
-    std::vector<std::uint32_t> new_triangle_of_;    // vertex u -> the new triangle (u, v, p)
+    std::vector<std::uint64_t> vertex_stamp_;      // vertex -> stamp when on the boundary
+    std::vector<std::uint32_t> next_on_boundary_;  // vertex u -> v of its boundary edge
+    std::vector<std::uint32_t> new_triangle_of_;   // vertex u -> the new triangle (u, v, p)
     std::vector<std::uint32_t> cavity_, stack_;
     std::vector<Edge> boundary_;
 };

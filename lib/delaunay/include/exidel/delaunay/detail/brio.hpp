@@ -76,7 +76,7 @@ constexpr std::uint32_t hilbert_key(std::uint32_t x, std::uint32_t y) noexcept {
         bx ^= t;
         by ^= t;
         d = (d << 2) | ((3 * bx) ^ by);
-        s ^= 1 ^ by;       // ry == 0: swap
+        s ^= 1 ^ by;         // ry == 0: swap
         f ^= bx & (1 ^ by);  // ry == 0 and rx == 1: complement
     }
     return d;

@@ -138,7 +138,8 @@ private:
         for (std::uint32_t i = 0; i + 1 < apex; ++i) {
             // left: (P_i, P_i+1, apex); right: (P_i+1, P_i, apex). Half-edge 3t is the
             // chain edge, on the hull.
-            const std::uint32_t t = left ? new_triangle(i, i + 1, apex) : new_triangle(i + 1, i, apex);
+            const std::uint32_t t =
+                left ? new_triangle(i, i + 1, apex) : new_triangle(i + 1, i, apex);
             const auto T = static_cast<std::int32_t>(3 * t);
             hull_edge[left ? i : i + 1] = T;
             if (prev_t >= 0) {
@@ -210,7 +211,8 @@ private:
             if (k_.orient2d(pts_[a], pts_[lower], p) != Sign::negative) break;
             lower = a;
             if (++visible >= m_->hull_size) {
-                return fail(FailureKind::hull_walk_exceeded, i, "the lower tangent walk passed every hull edge");
+                return fail(FailureKind::hull_walk_exceeded, i,
+                            "the lower tangent walk passed every hull edge");
             }
         }
         for (;;) {
@@ -219,11 +221,14 @@ private:
             if (k_.orient2d(pts_[upper], pts_[b], p) != Sign::negative) break;
             upper = b;
             if (++visible >= m_->hull_size) {
-                return fail(FailureKind::hull_walk_exceeded, i, "the upper tangent walk passed every hull edge");
+                return fail(FailureKind::hull_walk_exceeded, i,
+                            "the upper tangent walk passed every hull edge");
             }
         }
         if (visible == 0) {
-            return fail(FailureKind::no_visible_edge, i, "neither hull edge at the last point faces the new point, which lies outside the hull");
+            return fail(FailureKind::no_visible_edge, i,
+                        "neither hull edge at the last point faces the new point, which lies "
+                        "outside the hull");
         }
 
         // Erosion (Alg. 3 over half-edges). The visible chain lower -> ... -> upper is
@@ -259,7 +264,8 @@ private:
                     this->count(&Counters::eroded_edges);
                     this->count(&Counters::triangles_destroyed);
                     if (++eroded > live) {
-                        return fail(FailureKind::erosion_exceeded, i, "the erosion destroyed more triangles than there are");
+                        return fail(FailureKind::erosion_exceeded, i,
+                                    "the erosion destroyed more triangles than there are");
                     }
                     continue;
                 }
@@ -315,7 +321,7 @@ private:
     std::span<const std::uint32_t> input_of_;
     Starts starts_;
     Mesh* m_ = nullptr;
-    std::vector<Pending> stack_;       // reused by every insertion: no allocation
+    std::vector<Pending> stack_;  // reused by every insertion: no allocation
     std::vector<std::uint32_t> border_vertex_;
     std::vector<std::int32_t> border_behind_;
     std::vector<std::int32_t> flip_stack_;  // Repair::legalize
@@ -378,11 +384,10 @@ std::optional<Failure> build_radial(const K& kernel, std::span<const Point2> poi
 /// One radial run over the whole sorted input, written as an algorithm's output: the mesh
 /// over radial positions, their input indices, and the id of sorted position 0.
 template <PredicateKernel K, Instrumentation I, InCirclePolicy P, Repair R = Repair::erode>
-void build_radial_output(const K& kernel, const SortedInput& in, MeshOutput& out,
-                         Result& result) {
+void build_radial_output(const K& kernel, const SortedInput& in, MeshOutput& out, Result& result) {
     RadialIds ids;
-    result.failure = build_radial<K, I, P, R>(kernel, in.points, in.input_of, ids, out.mesh,
-                                              result.counters);
+    result.failure =
+        build_radial<K, I, P, R>(kernel, in.points, in.input_of, ids, out.mesh, result.counters);
     for (std::size_t j = 0; j < ids.order.size(); ++j) {
         if (ids.order[j] == 0) out.first = static_cast<std::uint32_t>(j);
     }

@@ -61,7 +61,10 @@ public:
     /// position; dwyer permutes both together. `mesh` receives the triangulation.
     DivideAndConquerBuilder(const K& kernel, std::vector<Point2>& points,
                             std::vector<std::uint32_t>& input_of, Mesh& mesh)
-        : k_(kernel), pts_(points), input_of_(input_of), mesh_(mesh),
+        : k_(kernel),
+          pts_(points),
+          input_of_(input_of),
+          mesh_(mesh),
           merger_(kernel, points, mesh) {}
 
     std::optional<Failure> run(Counters& counters) {
@@ -165,7 +168,8 @@ private:
         }
         cuts_.push_back(0);
         if (Alternate && hi - lo > 3) {
-            std::sort(first, last, [](const Item& a, const Item& b) { return cut_less(a.p, b.p, false); });
+            std::sort(first, last,
+                      [](const Item& a, const Item& b) { return cut_less(a.p, b.p, false); });
         }
     }
 
@@ -196,10 +200,10 @@ private:
     Mesh& mesh_;
     Merger<K, I> merger_;
     Counters leaf_counters_{};
-    PieceWorkspace leaf_work_;  // reused by every leaf
-    std::vector<std::uint8_t> cuts_;                               // the plan, pre-order
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> ends_;    // dwyer: start points
-    std::vector<std::uint32_t> position_of_;                       // dwyer: input -> position
+    PieceWorkspace leaf_work_;                                   // reused by every leaf
+    std::vector<std::uint8_t> cuts_;                             // the plan, pre-order
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> ends_;  // dwyer: start points
+    std::vector<std::uint32_t> position_of_;                     // dwyer: input -> position
     std::size_t next_ = 0, next_end_ = 0;
 };
 

@@ -36,8 +36,8 @@ struct ExternalIncremental {
     template <PredicateKernel K, Instrumentation I, InCirclePolicy P>
     /// `in` is consumed: tiled strips permute its points and input indices in place (the
     /// mesh's ids are positions in them; out.first says where the smallest point went).
-    static void run(const K& kernel, SortedInput& in, const Options& options,
-                    MeshOutput& out, Result& result) {
+    static void run(const K& kernel, SortedInput& in, const Options& options, MeshOutput& out,
+                    Result& result) {
         const std::size_t n = in.points.size();
         result.strategy = choose_strategy(n, options.strategy);
         if (options.strategy == Strategy::automatic && result.strategy == Strategy::strips &&
@@ -70,10 +70,10 @@ struct ExternalIncremental {
                 (tiles <= 1 || all_on_one_line(std::span<const Point2>(in.points), kernel))) {
                 radial(Strategy::strips);
             } else {
-                result.failure = build_strips<K, I, P>(
-                    kernel, std::span<Point2>(in.points), std::span<std::uint32_t>(in.input_of),
-                    cuts, tiles, options.threads, out.mesh, out.first, result.counters,
-                    result.strips);
+                result.failure = build_strips<K, I, P>(kernel, std::span<Point2>(in.points),
+                                                       std::span<std::uint32_t>(in.input_of), cuts,
+                                                       tiles, options.threads, out.mesh, out.first,
+                                                       result.counters, result.strips);
             }
         }
     }

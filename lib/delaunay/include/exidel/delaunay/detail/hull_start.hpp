@@ -63,8 +63,9 @@ public:
     explicit RadialHullHash(Point2 centre) : centre_(centre) {}
 
     void prepare(std::span<const Point2> pts) {
-        hash_.assign(std::max<std::size_t>(16, static_cast<std::size_t>(std::sqrt(double(pts.size())))),
-                     dead);
+        hash_.assign(
+            std::max<std::size_t>(16, static_cast<std::size_t>(std::sqrt(double(pts.size())))),
+            dead);
         bucket_.assign(pts.size(), 0);
         const Point2 box = bounding_box_centre(pts);
         const double ax = box.x - centre_.x, ay = box.y - centre_.y;
@@ -140,8 +141,8 @@ private:
         const double rx = dx * axis_x_ + dy * axis_y_, ry = dy * axis_x_ - dx * axis_y_;
         const double r = std::abs(rx) + std::abs(ry);
         if (!(r > 0) || !std::isfinite(r)) return 0;  // the centre itself, or overflow
-        const double q = rx / r;                        // in [-1, 1]
-        return ry >= 0 ? 1 - q : q - 1;                 // in [-2, 2], 0 along the axis
+        const double q = rx / r;                      // in [-1, 1]
+        return ry >= 0 ? 1 - q : q - 1;               // in [-2, 2], 0 along the axis
     }
     std::size_t hash_key(Point2 p) const {
         const double k = (pseudo_angle(p) - angle_lo_) * angle_scale_;

@@ -44,10 +44,10 @@ struct Lawson {
         Counting<I> flips;
         const std::size_t budget = n * (n - 1) / 2;
         if (!flip_all<P>(kernel, std::span<const Point2>(in.points), out.mesh, flips, budget)) {
-            result.failure = Failure{FailureKind::flips_exceeded, no_index, no_index,
-                                     "Lawson's flips passed n (n - 1) / 2 = " +
-                                         std::to_string(budget) +
-                                         ", more than an exact kernel can need"};
+            result.failure =
+                Failure{FailureKind::flips_exceeded, no_index, no_index,
+                        "Lawson's flips passed n (n - 1) / 2 = " + std::to_string(budget) +
+                            ", more than an exact kernel can need"};
         }
         result.counters += flips.counters_;
     }

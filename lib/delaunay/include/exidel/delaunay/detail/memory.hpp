@@ -90,7 +90,8 @@ class FreshBuffer {
 public:
     FreshBuffer() = default;
     explicit FreshBuffer(std::size_t n) : p_(FreshAllocator<T>().allocate(n)), n_(n) {}
-    FreshBuffer(FreshBuffer&& o) noexcept : p_(std::exchange(o.p_, nullptr)), n_(std::exchange(o.n_, 0)) {}
+    FreshBuffer(FreshBuffer&& o) noexcept
+        : p_(std::exchange(o.p_, nullptr)), n_(std::exchange(o.n_, 0)) {}
     FreshBuffer& operator=(FreshBuffer&& o) noexcept {
         std::swap(p_, o.p_);
         std::swap(n_, o.n_);

@@ -24,13 +24,12 @@
 //      base make a new triangle, and the base rises to the edge from the winner;
 //   3. with no valid candidate the base is the upper common tangent.
 //
-// On the arrays: a deleted edge is kept in a set of half-edges, and a triangle with a deleted edge is
-// destroyed after the zipper (its final faces are the new triangles). The zipper only
-// reads the arrays, so it walks the fans of L and R as they were, skipping marked edges;
-// that is exactly Guibas and Stolfi's structure, where the deleted edges are gone and the
-// new cross edges lie in the sectors the walk has passed. The new triangles take free
-// slots of either side: a merged triangulation of V vertices has at most 2V - 5
-// triangles, and each side owns 2 slots per vertex.
+// On the arrays: a deleted edge is kept in a set of half-edges, and a triangle with a deleted edge
+// is destroyed after the zipper (its final faces are the new triangles). The zipper only reads the
+// arrays, so it walks the fans of L and R as they were, skipping marked edges; that is exactly
+// Guibas and Stolfi's structure, where the deleted edges are gone and the new cross edges lie in
+// the sectors the walk has passed. The new triangles take free slots of either side: a merged
+// triangulation of V vertices has at most 2V - 5 triangles, and each side owns 2 slots per vertex.
 //
 // Both sides must have triangles (not all collinear). With an inexact kernel the zipper
 // may contradict itself: every loop is bounded, and the merge stops with
@@ -171,8 +170,8 @@ private:
     std::optional<Failure> fail(std::string what) const {
         return Failure{FailureKind::merge_inconsistent, no_index, no_index,
                        "merge of sorted points [" + std::to_string(L_->first) + ", " +
-                           std::to_string(L_->end) + ") and [" + std::to_string(R_->first) +
-                           ", " + std::to_string(R_->end) + "), at the step '" + std::move(what) +
+                           std::to_string(L_->end) + ") and [" + std::to_string(R_->first) + ", " +
+                           std::to_string(R_->end) + "), at the step '" + std::move(what) +
                            "', found no consistent merge"};
     }
     bool spend() { return budget_-- > 0; }
@@ -378,7 +377,8 @@ private:
         for (std::size_t j = 0; j < chains_.size();) {
             const Chain& c = chains_[j];
             if (j + 1 < chains_.size() && chains_[j + 1].lo == c.lo && chains_[j + 1].hi == c.hi) {
-                if (j + 2 < chains_.size() && chains_[j + 2].lo == c.lo && chains_[j + 2].hi == c.hi) {
+                if (j + 2 < chains_.size() && chains_[j + 2].lo == c.lo &&
+                    chains_[j + 2].hi == c.hi) {
                     return fail("three new triangles on one edge");
                 }
                 half[static_cast<std::size_t>(c.half)] = chains_[j + 1].half;
@@ -410,7 +410,7 @@ private:
     const K& k_;
     std::span<const Point2> pts_;
     Mesh& m_;
-    HalfEdgeSet gone_;                    // the deleted edges' half-edges
+    HalfEdgeSet gone_;  // the deleted edges' half-edges
     Piece* L_ = nullptr;
     Piece* R_ = nullptr;
     std::vector<Step> steps_;

@@ -36,10 +36,10 @@ struct Mesh {
     // Internal arrays, in fresh memory (memory.hpp); triangles and halfedges become the
     // Triangulation's.
     FreshVector<std::uint32_t> hull_next, hull_prev;  // the hull as a linked cycle
-    FreshVector<std::int32_t> hull_edge;  // v -> the half-edge v -> hull_next[v]
+    FreshVector<std::int32_t> hull_edge;              // v -> the half-edge v -> hull_next[v]
     std::size_t hull_size = 0;
-    bool collinear = false;               // no triangle: every point on one line
-    std::vector<std::uint32_t> free;      // slots of deleted triangles, reused first (LIFO)
+    bool collinear = false;           // no triangle: every point on one line
+    std::vector<std::uint32_t> free;  // slots of deleted triangles, reused first (LIFO)
 
     /// Empties the mesh and sizes the hull arrays for `vertices` ids, with room for the
     /// 2 vertices - 5 triangles (plus a margin for deleted slots) of a triangulation.

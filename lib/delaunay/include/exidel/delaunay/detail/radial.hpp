@@ -62,9 +62,9 @@ inline Point2 circumcentre_offset(Point2 a, Point2 b, Point2 c) {
 /// Why not the box centre itself: on a sampled convex curve the distance from a point
 /// inside the curve first falls and then rises along it, so the order starts in the
 /// middle and every point added at the end nearer the curve's point of greatest
-/// curvature re-triangulates all earlier ones (quadratic; docs/measurements.md). From the centre of the osculating circle the
-/// distance is monotone along a convex arc of increasing curvature, and the order walks
-/// the curve from one end, as the paper's order does on the favourable branch.
+/// curvature re-triangulates all earlier ones (quadratic; docs/measurements.md). From the centre of
+/// the osculating circle the distance is monotone along a convex arc of increasing curvature, and
+/// the order walks the curve from one end, as the paper's order does on the favourable branch.
 inline Point2 radial_centre(std::span<const Point2> points) {
     const Point2 box = bounding_box_centre(points);
     auto d2 = [](Point2 a, Point2 b) {
@@ -107,7 +107,8 @@ inline Point2 radial_centre(std::span<const Point2> points) {
     for (const Point2& p : points) extent = std::max({extent, std::abs(p.x), std::abs(p.y)});
     if (extent > 0 && std::isfinite(extent)) {
         const double ulp = std::ldexp(1.0, std::ilogb(extent) - 52);
-        const Point2 rounded{std::nearbyint(best.x / ulp) * ulp, std::nearbyint(best.y / ulp) * ulp};
+        const Point2 rounded{std::nearbyint(best.x / ulp) * ulp,
+                             std::nearbyint(best.y / ulp) * ulp};
         if (std::isfinite(rounded.x) && std::isfinite(rounded.y)) best = rounded;
     }
     return best;
@@ -191,7 +192,8 @@ void radial_order(std::span<const Point2> points, Point2 centre, const K& kernel
     for (std::size_t i = 0; i < points.size(); ++i) {
         const double dx = points[i].x - centre.x, dy = points[i].y - centre.y;
         // May be +inf (overflow), never NaN (the coordinates are finite) nor negative.
-        by_key[i] = {std::bit_cast<std::uint64_t>(dx * dx + dy * dy), static_cast<std::uint32_t>(i)};
+        by_key[i] = {std::bit_cast<std::uint64_t>(dx * dx + dy * dy),
+                     static_cast<std::uint32_t>(i)};
     }
     radix_sort(by_key, scratch.radix_buffer);
     FreshVector<Keyed>& keyed = scratch.keyed;

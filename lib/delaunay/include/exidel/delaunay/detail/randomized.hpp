@@ -252,16 +252,16 @@ private:
     // The first triangle (0, 1, 2) and its three ghosts, the roots (slots 0 .. 3).
     void start() {
         const std::uint32_t a = 0, b = 1, c = 2;
-        new_triangle(a, b, c);          // 0: a->b, b->c, c->a
-        new_triangle(b, a, inf_);       // 1: hull edge a->b
-        new_triangle(c, b, inf_);       // 2: hull edge b->c
-        new_triangle(a, c, inf_);       // 3: hull edge c->a
+        new_triangle(a, b, c);     // 0: a->b, b->c, c->a
+        new_triangle(b, a, inf_);  // 1: hull edge a->b
+        new_triangle(c, b, inf_);  // 2: hull edge b->c
+        new_triangle(a, c, inf_);  // 3: hull edge c->a
         link(0, 3);
         link(1, 6);
         link(2, 9);
-        link(4, 11);   // a->inf with inf->a
-        link(7, 5);    // b->inf with inf->b
-        link(10, 8);   // c->inf with inf->c
+        link(4, 11);  // a->inf with inf->a
+        link(7, 5);   // b->inf with inf->b
+        link(10, 8);  // c->inf with inf->c
         hull_size_ = 3;
     }
 
@@ -363,9 +363,10 @@ private:
             }
             if (found == none) {
                 return fail(FailureKind::location_exceeded, i,
-                            node == none ? std::string("no root of the history DAG contains the point")
-                                         : "no child of history node " + std::to_string(node) +
-                                               " contains the point");
+                            node == none
+                                ? std::string("no root of the history DAG contains the point")
+                                : "no child of history node " + std::to_string(node) +
+                                      " contains the point");
             }
             this->count(&Counters::location_steps);
             node = found;
@@ -440,7 +441,8 @@ private:
         const std::uint32_t p = vert(h), q = vert(hn), r = vert(hp);
         const std::uint32_t h2 = adj_[h], t2 = h2 / 3;
         if (!alive(t2) || (ghost(t2) && h2 % 3 != 0)) {
-            return fail(FailureKind::location_exceeded, x, "the triangle across the edge is not a live neighbour");
+            return fail(FailureKind::location_exceeded, x,
+                        "the triangle across the edge is not a live neighbour");
         }
         const std::uint32_t A = new_triangle(q, r, x), B = new_triangle(r, p, x);
         link(3 * A, adj_[hn]);
@@ -451,11 +453,11 @@ private:
         if (ghost(t2)) {
             // Ghost (q, p, inf) of hull edge p -> q: ghosts (x, p, inf) and (q, x, inf).
             const std::uint32_t G = new_triangle(x, p, inf_), H = new_triangle(q, x, inf_);
-            link(3 * B + 1, 3 * G);          // p -> x with x -> p
-            link(3 * H, 3 * A + 2);          // q -> x with x -> q
-            link(3 * G + 1, adj_[h2 + 1]);   // p -> inf
-            link(3 * H + 2, adj_[h2 + 2]);   // inf -> q
-            link(3 * G + 2, 3 * H + 1);      // inf -> x with x -> inf
+            link(3 * B + 1, 3 * G);         // p -> x with x -> p
+            link(3 * H, 3 * A + 2);         // q -> x with x -> q
+            link(3 * G + 1, adj_[h2 + 1]);  // p -> inf
+            link(3 * H + 2, adj_[h2 + 2]);  // inf -> q
+            link(3 * G + 2, 3 * H + 1);     // inf -> x with x -> inf
             ++hull_size_;
         } else {
             // (q, p, s): (p, s, x) and (s, q, x).
@@ -493,7 +495,8 @@ private:
             chain_.push_back(prev_g);
             g = prev_g;
             if (++visible >= hull_size_) {
-                return fail(FailureKind::hull_walk_exceeded, x, "the lower tangent walk passed every hull edge");
+                return fail(FailureKind::hull_walk_exceeded, x,
+                            "the lower tangent walk passed every hull edge");
             }
         }
         std::reverse(chain_.begin(), chain_.end());
@@ -506,7 +509,8 @@ private:
             chain_.push_back(next_g);
             g = next_g;
             if (++visible >= hull_size_) {
-                return fail(FailureKind::hull_walk_exceeded, x, "the upper tangent walk passed every hull edge");
+                return fail(FailureKind::hull_walk_exceeded, x,
+                            "the upper tangent walk passed every hull edge");
             }
         }
         const auto k = static_cast<std::uint32_t>(chain_.size());
@@ -516,8 +520,8 @@ private:
         for (std::uint32_t i = 0; i < k; ++i) {
             const std::uint32_t g = chain_[i];
             const std::uint32_t F = new_triangle(vert(3 * g), vert(3 * g + 1), x);
-            link(3 * F, adj_[3 * g]);                          // u_(i+1) -> u_i: the old hull edge
-            if (i > 0) link(3 * F + 1, 3 * (F - 1) + 2);       // u_i -> x with x -> u_i
+            link(3 * F, adj_[3 * g]);                     // u_(i+1) -> u_i: the old hull edge
+            if (i > 0) link(3 * F + 1, 3 * (F - 1) + 2);  // u_i -> x with x -> u_i
             stack_.push_back(3 * F);
         }
         const std::uint32_t g_first = chain_.front(), g_last = chain_.back();
@@ -549,16 +553,19 @@ private:
             const std::uint32_t t = e / 3;
             const std::uint32_t h = adj_[e], t2 = h / 3;
             if (!alive(t) || !alive(t2)) {
-                return fail(FailureKind::flips_exceeded, x, "an edge to legalize borders a destroyed triangle");
+                return fail(FailureKind::flips_exceeded, x,
+                            "an edge to legalize borders a destroyed triangle");
             }
             if (ghost(t2)) continue;  // a hull edge
             const std::uint32_t a = vert(e), b = vert(e + 1), d = vert(prev3(h));
             if (d == x) {
-                return fail(FailureKind::flips_exceeded, x, "the new point is on both sides of an edge");
+                return fail(FailureKind::flips_exceeded, x,
+                            "the new point is on both sides of an edge");
             }
             if (!in_circle(pt(b), pt(a), pt(d), pt(x))) continue;
             if (++flips > x) {
-                return fail(FailureKind::flips_exceeded, x, "more flips than the point can have neighbours");
+                return fail(FailureKind::flips_exceeded, x,
+                            "more flips than the point can have neighbours");
             }
             if (!room(2)) return too_big(x);
             this->count(&Counters::lawson_flips);
@@ -583,7 +590,8 @@ private:
         return fail(FailureKind::hull_walk_exceeded, x, "the hull walk left the ghost triangles");
     }
     std::optional<Failure> too_big(std::uint32_t x) const {
-        return fail(FailureKind::too_many_points, x, "the history DAG outgrew 32-bit half-edge indices");
+        return fail(FailureKind::too_many_points, x,
+                    "the history DAG outgrew 32-bit half-edge indices");
     }
 
     static std::uint32_t next3(std::uint32_t h) noexcept { return h % 3 == 2 ? h - 2 : h + 1; }
@@ -635,12 +643,12 @@ private:
     }
 
     const K& k_;
-    std::vector<Point2> pts_;               // in insertion order
-    std::vector<std::uint32_t> input_of_;   // insertion position -> input index
-    std::vector<std::uint32_t> order_;      // insertion position -> sorted position
+    std::vector<Point2> pts_;              // in insertion order
+    std::vector<std::uint32_t> input_of_;  // insertion position -> input index
+    std::vector<std::uint32_t> order_;     // insertion position -> sorted position
     std::uint32_t inf_ = 0;
-    std::vector<std::uint32_t> adj_;                     // 3 per slot
-    std::vector<Node> node_;                             // 1 per slot
+    std::vector<std::uint32_t> adj_;    // 3 per slot
+    std::vector<Node> node_;            // 1 per slot
     std::vector<std::uint32_t> stack_;  // half-edges opposite the new point, to legalize
     std::vector<std::uint32_t> chain_;  // the visible ghosts, in hull order
     std::size_t hull_size_ = 0;

@@ -164,7 +164,8 @@ StripTiles tile_strip(const K& kernel, std::span<const Point2> pts,
         } else if (filled > 0) {
             offset.back() += static_cast<std::uint32_t>(filled);
         }
-        for (std::uint32_t& t : tile_of) t = std::min(t, static_cast<std::uint32_t>(offset.size() - 1));
+        for (std::uint32_t& t : tile_of)
+            t = std::min(t, static_cast<std::uint32_t>(offset.size() - 1));
     }
     // offset: tile sizes -> each tile's next free position (a stable scatter by tile).
     std::uint32_t start = 0;
@@ -188,9 +189,8 @@ StripTiles tile_strip(const K& kernel, std::span<const Point2> pts,
         auto& items = scratch.items;
         items.clear();
         for (std::uint32_t j = lo; j < hi; ++j) items.emplace_back(to_pts[j], to_ids[j]);
-        std::sort(items.begin(), items.end(), [](const auto& p, const auto& q) {
-            return cut_less(p.first, q.first, false);
-        });
+        std::sort(items.begin(), items.end(),
+                  [](const auto& p, const auto& q) { return cut_less(p.first, q.first, false); });
         for (std::uint32_t j = lo; j < hi; ++j) std::tie(to_pts[j], to_ids[j]) = items[j - lo];
     };
     std::vector<std::uint32_t> joined{0};
@@ -236,10 +236,10 @@ StripTiles tile_strip(const K& kernel, std::span<const Point2> pts,
 
 /// Triangulates positions [a, b) of `pts` (sorted lexicographically, at least three, not
 /// all collinear) into the shared arrays: vertex ids are positions, triangle slots
-/// [2a, 2b) (a triangulation of b - a points has at most 2 (b - a) - 5 triangles). Three points are one triangle,
-/// written directly; more are triangulated in their own radial order (build_radial) and
-/// copied in. `piece` receives the range and its unused slots; counters go to `into`.
-/// `work` is working memory, reused from piece to piece.
+/// [2a, 2b) (a triangulation of b - a points has at most 2 (b - a) - 5 triangles). Three points are
+/// one triangle, written directly; more are triangulated in their own radial order (build_radial)
+/// and copied in. `piece` receives the range and its unused slots; counters go to `into`. `work` is
+/// working memory, reused from piece to piece.
 struct PieceWorkspace {
     RadialIds ids;
     Mesh part;
@@ -274,8 +274,8 @@ std::optional<Failure> build_piece(const K& kernel, std::span<const Point2> pts,
     const auto part_points = pts.subspan(a, b - a);
     RadialIds& ids = work.ids;
     Mesh& part = work.part;
-    auto failure = build_radial<K, I, P>(kernel, part_points, input_of.subspan(a, b - a), ids,
-                                         part, into, work.radial);
+    auto failure = build_radial<K, I, P>(kernel, part_points, input_of.subspan(a, b - a), ids, part,
+                                         into, work.radial);
     if (failure) return failure;
     const std::vector<std::uint32_t>& order = ids.order;
     if (part.collinear) {
@@ -332,8 +332,8 @@ std::optional<Failure> build_strips(const K& kernel, std::span<Point2> pts,
     // strips start: its first and last position, unless tiles permuted it.
     std::vector<std::uint32_t> first(strips), last(strips), pieces_of(strips, 1);
 
-    auto build_strip = [&](std::size_t s, Counters& into, PieceWorkspace& work)
-        -> std::optional<Failure> {
+    auto build_strip = [&](std::size_t s, Counters& into,
+                           PieceWorkspace& work) -> std::optional<Failure> {
         const std::uint32_t a = cuts[s], b = cuts[s + 1];
         if (tiles <= 1) {
             first[s] = a;
@@ -359,14 +359,15 @@ std::optional<Failure> build_strips(const K& kernel, std::span<Point2> pts,
         Merger<K, I> merger(kernel, pts, mesh);
         auto solve = [&](auto& self, std::size_t lo, std::size_t size) -> std::optional<Failure> {
             if (size == 1) {
-                return build_piece<K, I, P>(kernel, pts, input_of, t.cuts[lo], t.cuts[lo + 1],
-                                            mesh, stack[lo], into, work);
+                return build_piece<K, I, P>(kernel, pts, input_of, t.cuts[lo], t.cuts[lo + 1], mesh,
+                                            stack[lo], into, work);
             }
             const std::size_t half = size / 2;
             if (auto failure = self(self, lo, half)) return failure;
             if (lo + half >= count) return std::nullopt;
             if (auto failure = self(self, lo + half, half)) return failure;
-            return merger.merge(stack[lo], stack[lo + half], t.high[lo + half - 1], t.low[lo + half]);
+            return merger.merge(stack[lo], stack[lo + half], t.high[lo + half - 1],
+                                t.low[lo + half]);
         };
         auto failure = solve(solve, 0, std::bit_ceil(count));
         into += merger.counters();
