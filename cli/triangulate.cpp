@@ -276,9 +276,13 @@ int run(const Options& o, const CommandLine& cli) {
     // Triangulate: the only timed step. Counters only when asked for, so a plain run is
     // the uninstrumented algorithm.
     progress.phase("triangulating " + std::to_string(points.size()) + " points");
-    delaunay::Options options{o.incircle, o.strategy, o.threads, o.strip_points};
-    options.strip_tiles = o.strip_tiles;
-    options.algorithm = o.algorithm;
+    const delaunay::Options options = delaunay::Options{}
+                                          .with_algorithm(o.algorithm)
+                                          .with_incircle(o.incircle)
+                                          .with_strategy(o.strategy)
+                                          .with_threads(o.threads)
+                                          .with_strip_points(o.strip_points)
+                                          .with_strip_tiles(o.strip_tiles);
     const Triangulated triangulated = triangulate_points(*kernel, points, options, o.stats);
     const delaunay::Result& result = triangulated.result;
     times.triangulate = triangulated.ms;

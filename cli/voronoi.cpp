@@ -244,9 +244,8 @@ int run(const Options& o, const CommandLine& cli) {
 
     // Triangulate.
     progress.phase("triangulating " + std::to_string(points.size()) + " points");
-    delaunay::Options options;
-    options.threads = o.threads;
-    options.algorithm = o.algorithm;
+    const delaunay::Options options =
+        delaunay::Options{}.with_algorithm(o.algorithm).with_threads(o.threads);
     const Triangulated triangulated = triangulate_points(*kernel, points, options, false);
     times.triangulate = triangulated.ms;
     const delaunay::Triangulation& tri = triangulated.result.triangulation;

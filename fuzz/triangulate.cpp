@@ -115,16 +115,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             if (!a.takes_order && s != delaunay::Strategy::lexicographic) continue;
             for (const auto policy :
                  {delaunay::InCirclePolicy::determinant, delaunay::InCirclePolicy::cosine}) {
-                delaunay::Options o;
-                o.algorithm = a.id;
-                o.strategy = a.takes_order ? s : delaunay::Strategy::automatic;
-                o.incircle = policy;
-                o.strip_points = 8;  // several strips and merges even for small inputs
-                o.strip_tiles = 1;
+                const delaunay::Options o =
+                    delaunay::Options{}
+                        .with_algorithm(a.id)
+                        .with_strategy(a.takes_order ? s : delaunay::Strategy::automatic)
+                        .with_incircle(policy)
+                        .with_strip_points(8)  // several strips and merges even for small inputs
+                        .with_strip_tiles(1);
                 run(o);
                 if (a.takes_order && s == delaunay::Strategy::strips) {
-                    o.strip_tiles = 3;  // strips cut across into tiles: stacked pieces merged
-                    run(o);
+                    // Strips cut across into tiles: stacked pieces merged.
+                    run(o.with_strip_tiles(3));
                 }
             }
         }

@@ -27,26 +27,28 @@ using delaunay::Strategy;
 
 delaunay::Options to_options(const std::string& algorithm, const std::string& incircle,
                              const std::string& strategy, unsigned threads) {
-    delaunay::Options o;
-    o.algorithm = to_algorithm(algorithm);
-    if (incircle == "determinant") {
-        o.incircle = InCirclePolicy::determinant;
-    } else if (incircle == "cosine") {
-        o.incircle = InCirclePolicy::cosine;
-    } else {
+    const Algorithm a = to_algorithm(algorithm);
+    InCirclePolicy policy = InCirclePolicy::determinant;
+    if (incircle == "cosine") {
+        policy = InCirclePolicy::cosine;
+    } else if (incircle != "determinant") {
         throw py::value_error("unknown incircle '" + incircle + "'; expected determinant|cosine");
     }
-    bool found = strategy == "auto";
+    std::optional<Strategy> order;
+    if (strategy == "auto") order = Strategy::automatic;
     for (Strategy s : {Strategy::lexicographic, Strategy::radial, Strategy::strips}) {
-        if (strategy == delaunay::to_string(s)) o.strategy = s, found = true;
+        if (strategy == delaunay::to_string(s)) order = s;
     }
-    if (!found) {
+    if (!order) {
         throw py::value_error("unknown order '" + strategy +
                               "'; expected auto|lexicographic|radial|strips");
     }
     if (threads == 0) throw py::value_error("threads must be at least 1");
-    o.threads = threads;
-    return o;
+    return delaunay::Options{}
+        .with_algorithm(a)
+        .with_incircle(policy)
+        .with_strategy(*order)
+        .with_threads(threads);
 }
 
 py::dict counters_dict(const delaunay::Counters& c) {

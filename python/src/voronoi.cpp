@@ -49,9 +49,8 @@ public:
         if (threads == 0) throw py::value_error("threads must be at least 1");
         points_.assign(p.data, p.data + p.rows);
         const AnyKernel kernel = to_kernel(kernel_name);
-        delaunay::Options options;
-        options.algorithm = to_algorithm(algorithm);
-        options.threads = threads;
+        const delaunay::Options options =
+            delaunay::Options{}.with_algorithm(to_algorithm(algorithm)).with_threads(threads);
         std::optional<std::string> error;
         {
             py::gil_scoped_release release;

@@ -185,13 +185,12 @@ std::string_view to_string(Outcome o) noexcept {
 }
 
 delaunay::Options study_options(delaunay::InCirclePolicy policy, Method method) {
-    delaunay::Options options;
-    options.incircle = policy;
-    options.strategy = method.order;
-    options.threads = 1;
-    options.strip_points = study_strip_points;
-    options.algorithm = method.algorithm;
-    return options;
+    return delaunay::Options{}
+        .with_algorithm(method.algorithm)
+        .with_incircle(policy)
+        .with_strategy(method.order)
+        .with_threads(1)
+        .with_strip_points(study_strip_points);
 }
 
 std::vector<Method> methods_of(std::span<const delaunay::Algorithm> algorithms,

@@ -8,6 +8,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "exidel/delaunay/algorithms.hpp"
@@ -54,7 +55,37 @@ struct Options {
     /// strip_points, so that pieces stay roughly square when strips would be thin; 1 =
     /// plain strips; 0 chooses by input size (default_strip_tiles, external.hpp).
     std::size_t strip_tiles = 0;
+
+    // Chainable setters, one per field: `Options{}.with_algorithm(a).with_threads(n)`
+    // names each field it sets, in any order, and leaves the others at their defaults.
+    // Every place that builds Options from its own settings uses them: a new field is its
+    // declaration and its setter here, and no call site depends on the order of the fields.
+    constexpr Options with_incircle(InCirclePolicy v) const noexcept {
+        return with(&Options::incircle, v);
+    }
+    constexpr Options with_strategy(Strategy v) const noexcept {
+        return with(&Options::strategy, v);
+    }
+    constexpr Options with_threads(unsigned v) const noexcept { return with(&Options::threads, v); }
+    constexpr Options with_strip_points(std::size_t v) const noexcept {
+        return with(&Options::strip_points, v);
+    }
+    constexpr Options with_algorithm(Algorithm v) const noexcept {
+        return with(&Options::algorithm, v);
+    }
+    constexpr Options with_strip_tiles(std::size_t v) const noexcept {
+        return with(&Options::strip_tiles, v);
+    }
+
+private:
+    template <class T>
+    constexpr Options with(T Options::*field, T value) const noexcept {
+        Options copy = *this;
+        copy.*field = value;
+        return copy;
+    }
 };
+static_assert(std::is_aggregate_v<Options>, "Options stays an aggregate: designated initializers");
 
 /// What a run records. `off` compiles every counter away.
 enum class Instrumentation {
