@@ -316,22 +316,102 @@ Classification replay_fixture(const std::filesystem::path& file, const Kernel& k
     return classify_triangulation(points, kernel, policy, method);
 }
 
-TriangulationStudy run_triangulation_study(const TriangulationOptions& options,
-                                           const RunOptions& run) {
+namespace {
+
+// =================================================================================
+// The study in four steps: plan (what runs, from the options), run (every point set,
+// in parallel), aggregate (counts, fixtures, work, rates) and report (the files).
+
+/// One point set of the work list: its family, seed and size.
+struct PointSet {
+    testing::Family family;
+    std::size_t seed_index = 0;
+    std::size_t size = 0;
+};
+
+/// What a triangulation study runs, decided from its options before anything runs.
+struct StudyPlan {
+    std::vector<Kernel> kernels;
+    std::vector<testing::Family> families;
+    std::vector<delaunay::Strategy> orders;
+    std::vector<Method> methods;       ///< the outcome tables' (and fixtures') methods
+    std::vector<Method> work_methods;  ///< the work table's: every order
+    /// More than one algorithm: every table gets an "algorithm" column (with one, the
+    /// tables keep the columns they had before the registry).
+    bool algorithm_column = false;
+    std::size_t seeds = 0;
+    std::vector<std::size_t> sizes;
+    std::vector<unsigned> bits;        ///< the MPFR precisions of the failure rates
+    std::vector<Kernel> mpfr_kernels;  ///< one per entry of bits
+    std::size_t shrink_per_class = 0;
+    /// The work list: one point set per (family, seed), families outermost. Its contents
+    /// depend only on the options, never on --jobs.
+    std::vector<PointSet> sets;
+
+    /// Runs per method on one point set: every kernel with both policies.
+    std::size_t runs_per_method() const { return kernels.size() * std::size(both_policies); }
+};
+
+/// What one point set gave: the points, every method x kernel x policy classified (in
+/// that nesting), the work of every work method with the adaptive kernel, and per method,
+/// then precision, whether the MPFR kernel's outcome was wrong (1) or not (0).
+struct SetResult {
+    std::vector<Point2> points;
+    std::vector<TriangulationRun> runs;
+    std::vector<WorkSample> work;
+    std::vector<std::uint8_t> wrong_at;
+};
+
+using OutcomeCounts = std::array<std::uint64_t, all_outcomes.size()>;
+/// Positions in the plan's lists: (family, method, kernel, policy) and (method, kernel,
+/// policy).
+using FamilyCell = std::tuple<std::size_t, std::size_t, std::size_t, int>;
+using Cell = std::tuple<std::size_t, std::size_t, int>;
+
+/// m[key], or an empty value when no run counted there.
+template <class Map>
+const typename Map::mapped_type& count_at(const Map& m, const typename Map::key_type& key) {
+    static const typename Map::mapped_type none{};
+    const auto it = m.find(key);
+    return it == m.end() ? none : it->second;
+}
+
+/// A wrong outcome shrunk to a fixture: its record (the file's name included), the
+/// outcome of the run it came from (the fixture replays when its own outcome is the
+/// same), and the file's text.
+struct ShrunkFixture {
+    Fixture fixture;
+    Outcome original;
+    std::string text;
+};
+
+/// The study's results put together: the runs, work and precision rates of the study
+/// (its tables and report are the report step's), the outcome counts, and the fixtures.
+struct StudyTotals {
+    TriangulationStudy study;
+    std::map<FamilyCell, OutcomeCounts> counts;
+    std::map<Cell, OutcomeCounts> totals;
+    /// Wrong outcomes by kind ("failure (no_visible_edge)", "not_delaunay", ...).
+    std::map<Cell, std::map<std::string, std::uint64_t>> details;
+    std::vector<OrderWork> overall;  ///< the work of each work method over all families
+    std::vector<ShrunkFixture> fixtures;
+};
+
+StudyPlan plan_study(const TriangulationOptions& options, const RunOptions& run) {
+    StudyPlan plan;
     std::vector<std::string> kernel_names = options.kernels;
     if (kernel_names.empty()) {
         kernel_names = {"double", "long-double", "mpfr:53", "mpfr:106", "adaptive", "exact"};
     }
-    std::vector<Kernel> kernels;
-    for (const std::string& k : kernel_names) kernels.push_back(parse_kernel(k));
-    std::vector<testing::Family> families = options.families;
-    if (families.empty()) {
-        for (const auto& info : testing::all_families()) families.push_back(info.family);
+    for (const std::string& k : kernel_names) plan.kernels.push_back(parse_kernel(k));
+    plan.families = options.families;
+    if (plan.families.empty()) {
+        for (const auto& info : testing::all_families()) plan.families.push_back(info.family);
     }
-    const std::vector<delaunay::Strategy> orders =
-        options.orders.empty() ? std::vector<delaunay::Strategy>{delaunay::Strategy::lexicographic}
-                               : options.orders;
-    for (delaunay::Strategy o : orders) {
+    plan.orders = options.orders.empty()
+                      ? std::vector<delaunay::Strategy>{delaunay::Strategy::lexicographic}
+                      : options.orders;
+    for (delaunay::Strategy o : plan.orders) {
         if (std::find(all_orders.begin(), all_orders.end(), o) == all_orders.end()) {
             throw std::invalid_argument(
                 "the triangulation study runs lexicographic, radial or strips, not " +
@@ -343,172 +423,274 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options,
         for (const delaunay::AlgorithmInfo& info : delaunay::algorithms())
             algorithms.push_back(info.id);
     }
-    // What the outcome tables run, and what the work table runs (every order).
-    const std::vector<Method> methods = methods_of(algorithms, orders);
-    const std::vector<Method> work_methods = methods_of(algorithms, all_orders);
-    // One algorithm: the tables keep the columns they had before the registry.
-    const bool algorithm_column = algorithms.size() > 1;
-    const std::size_t seeds = options.seeds ? options.seeds : (run.quick ? 4 : 16);
-    const std::vector<std::size_t> sizes =
+    plan.methods = methods_of(algorithms, plan.orders);
+    plan.work_methods = methods_of(algorithms, all_orders);
+    plan.algorithm_column = algorithms.size() > 1;
+    plan.seeds = options.seeds ? options.seeds : (run.quick ? 4 : 16);
+    plan.sizes =
         options.sizes.empty() ? std::vector<std::size_t>{50, 100, 200, 500} : options.sizes;
-    for (std::size_t n : sizes) {
+    for (std::size_t n : plan.sizes) {
         if (n < 1 || n > 100000)
             throw std::invalid_argument("triangulation sizes must be in [1, 100000]");
     }
-    const std::size_t per_method = kernels.size() * std::size(both_policies);
-    const std::vector<unsigned> bits =
-        options.precision_bits.empty()
-            ? std::vector<unsigned>{12, 16, 20, 24, 32, 40, 48, 53, 64, 80, 106}
-            : options.precision_bits;
-    std::vector<Kernel> mpfr_kernels;
-    for (unsigned b : bits) mpfr_kernels.push_back(parse_kernel("mpfr:" + std::to_string(b)));
-
-    // One chunk per (family, seed): one point set, every method, kernel and policy on it
-    // (runs in that nesting), and the work of every work method with the adaptive kernel.
-    struct Chunk {
-        testing::Family family;
-        std::size_t seed_index;
-        std::vector<Point2> points;
-        std::vector<TriangulationRun> runs;
-        std::vector<WorkSample> work;
-        std::vector<std::uint8_t> wrong_at;  // per method, then precision: 1 if not Delaunay
-    };
-    std::vector<Chunk> chunks;
-    for (testing::Family f : families) {
-        for (std::size_t s = 0; s < seeds; ++s) chunks.push_back({f, s, {}, {}, {}, {}});
+    plan.bits = options.precision_bits.empty()
+                    ? std::vector<unsigned>{12, 16, 20, 24, 32, 40, 48, 53, 64, 80, 106}
+                    : options.precision_bits;
+    for (unsigned b : plan.bits)
+        plan.mpfr_kernels.push_back(parse_kernel("mpfr:" + std::to_string(b)));
+    plan.shrink_per_class = options.shrink_per_class;
+    for (testing::Family f : plan.families) {
+        for (std::size_t s = 0; s < plan.seeds; ++s)
+            plan.sets.push_back({f, s, plan.sizes[s % plan.sizes.size()]});
     }
-    Progress progress("triangulation", chunks.size(), run.progress);
-    for_each_chunk(chunks.size(), run.jobs, &progress, [&](std::size_t i) {
-        Chunk& c = chunks[i];
-        const std::size_t n = sizes[c.seed_index % sizes.size()];
+    return plan;
+}
+
+/// Draws every point set of the plan and runs everything on it, on run.jobs threads
+/// (each set's result in its own slot: the results do not depend on the thread count).
+std::vector<SetResult> run_study(const StudyPlan& plan, const RunOptions& run) {
+    std::vector<SetResult> results(plan.sets.size());
+    Progress progress("triangulation", plan.sets.size(), run.progress);
+    for_each_chunk(plan.sets.size(), run.jobs, &progress, [&](std::size_t i) {
+        const PointSet& set = plan.sets[i];
+        SetResult& r = results[i];
         {
             const std::lock_guard lock(rapidcheck_mutex());
             const rc::Random random(derive_seed(
-                run.seed, {triangulation_study_id, std::uint64_t(c.family), c.seed_index}));
-            c.points = testing::gen_points(c.family, n)(random).value();
+                run.seed, {triangulation_study_id, std::uint64_t(set.family), set.seed_index}));
+            r.points = testing::gen_points(set.family, set.size)(random).value();
         }
-        for (const Method& m : methods) {
-            for (const Kernel& k : kernels) {
+        for (const Method& m : plan.methods) {
+            for (const Kernel& k : plan.kernels) {
                 for (delaunay::InCirclePolicy p : both_policies) {
-                    c.runs.push_back({c.family, c.seed_index, n, kernel_name(k), p,
-                                      classify_triangulation(c.points, k, p, m), m.order,
+                    r.runs.push_back({set.family, set.seed_index, set.size, kernel_name(k), p,
+                                      classify_triangulation(r.points, k, p, m), m.order,
                                       m.algorithm});
                 }
             }
         }
-        for (const Method& m : work_methods) c.work.push_back(measure_work(c.points, m));
-        for (const Method& m : methods) {
-            for (const Kernel& k : mpfr_kernels) {
-                const Classification r =
-                    classify_triangulation(c.points, k, delaunay::InCirclePolicy::determinant, m);
-                c.wrong_at.push_back(is_wrong(r.outcome) ? 1 : 0);
+        for (const Method& m : plan.work_methods) r.work.push_back(measure_work(r.points, m));
+        for (const Method& m : plan.methods) {
+            for (const Kernel& k : plan.mpfr_kernels) {
+                const Classification c =
+                    classify_triangulation(r.points, k, delaunay::InCirclePolicy::determinant, m);
+                r.wrong_at.push_back(is_wrong(c.outcome) ? 1 : 0);
             }
         }
     });
+    return results;
+}
 
-    TriangulationStudy study;
-    // Counts per (family, method, kernel, policy) and per (method, kernel, policy), by positions.
-    using Key = std::tuple<std::size_t, std::size_t, std::size_t, int>;
-    using Cell = std::tuple<std::size_t, std::size_t, int>;
-    std::map<Key, std::array<std::uint64_t, all_outcomes.size()>> counts;
-    std::map<Cell, std::array<std::uint64_t, all_outcomes.size()>> totals;
-    std::map<Cell, std::map<std::string, std::uint64_t>> details;
+/// The name of a fixture's file inside run.out, and its text: a header saying where it
+/// comes from and how to replay it, then the points.
+ShrunkFixture make_fixture(const TriangulationRun& from, const Kernel& k, std::size_t original_size,
+                           std::vector<Point2> points, const RunOptions& run) {
+    const std::string kname = kernel_name(k);
+    const Method method(from.algorithm, from.order);
+    const std::string oname = is_external(method)
+                                  ? order_name(method)
+                                  : std::string(delaunay::to_string(method.algorithm));
+    // The paper's order keeps the names fixtures had before orders existed; another
+    // algorithm's fixtures carry its name instead of an order.
+    const std::string file = "fixtures/" + std::string(to_string(from.result.outcome)) + "-" +
+                             kernel_file_name(k) + "-" + std::string(policy_name(from.policy)) +
+                             (is_paper_order(method) ? "" : "-" + oname) + "-" +
+                             std::string(testing::family_name(from.family)) + "-s" +
+                             std::to_string(from.seed_index) + ".xy";
+    // The shrunk set's own classification (its detail may differ from the original's
+    // for invalid and not_delaunay outcomes, which shrink by outcome only).
+    const Classification now = classify_triangulation(points, k, from.policy, method);
+    const std::string cmd_flags =
+        "--kernel " + kname + " --incircle " + std::string(policy_name(from.policy));
+    const std::vector<std::string> header{
+        "exidel study triangulation fixture: " + describe(now),
+        "kernel " + kname + ", incircle policy " + std::string(policy_name(from.policy)) +
+            (is_external(method) ? ", order " : ", algorithm ") + oname,
+        "family " + std::string(testing::family_name(from.family)) + ", seed index " +
+            std::to_string(from.seed_index) + " of study seed " + std::to_string(run.seed) + ", " +
+            std::to_string(original_size) + " points shrunk to " + std::to_string(points.size()),
+        "reproduce: exidel study replay -i FILE " + cmd_flags + replay_order_flags(method),
+        "      and: exidel triangulate -i FILE " + cmd_flags + triangulate_order_flags(method) +
+            (now.outcome == Outcome::failure ? "   (exit status 1: triangulation failed)"
+                                             : "   (output differs from --kernel exact)"),
+    };
+    return {
+        {file, kname, from.policy, now, original_size, points.size(), from.order, from.algorithm},
+        from.result.outcome,
+        fixture_text(points, header)};
+}
+
+/// Counts the outcomes per cell, shrinks the first wrong outcomes of each kind (in
+/// parallel) into fixtures, sums the work per family and over all of them, and the
+/// failure rates per method and precision. Everything in the order of the work list, so
+/// nothing depends on which thread ran what.
+StudyTotals aggregate_study(const StudyPlan& plan, const std::vector<SetResult>& results,
+                            const RunOptions& run) {
+    StudyTotals t;
+    // The wrong outcomes to shrink: at most shrink_per_class per (method, kernel, policy,
+    // outcome), the first ones in the work list.
     struct Candidate {
-        const Chunk* chunk;
-        std::size_t kernel;
+        std::size_t set, kernel;
         TriangulationRun run;
     };
     std::vector<Candidate> to_shrink;
     std::map<std::tuple<std::size_t, std::size_t, int, int>, std::size_t> shrink_count;
-    for (std::size_t ci = 0; ci < chunks.size(); ++ci) {
-        const Chunk& c = chunks[ci];
-        const auto fpos =
-            std::size_t(std::find(families.begin(), families.end(), c.family) - families.begin());
-        for (std::size_t r = 0; r < c.runs.size(); ++r) {
-            const TriangulationRun& tr = c.runs[r];
+    const std::size_t per_method = plan.runs_per_method();
+    for (std::size_t si = 0; si < results.size(); ++si) {
+        const auto fpos = std::size_t(
+            std::find(plan.families.begin(), plan.families.end(), plan.sets[si].family) -
+            plan.families.begin());
+        const std::vector<TriangulationRun>& runs = results[si].runs;
+        for (std::size_t r = 0; r < runs.size(); ++r) {
+            const TriangulationRun& tr = runs[r];
             const std::size_t opos = r / per_method;
             const std::size_t kpos = r % per_method / std::size(both_policies);
             const int pol = int(tr.policy);
             const auto o = std::size_t(tr.result.outcome);
-            ++counts[{fpos, opos, kpos, pol}][o];
-            ++totals[{opos, kpos, pol}][o];
+            ++t.counts[{fpos, opos, kpos, pol}][o];
+            ++t.totals[{opos, kpos, pol}][o];
             if (is_wrong(tr.result.outcome)) {
                 // Edge counts of not_delaunay outcomes would make one entry per run.
-                ++details[{opos, kpos, pol}][tr.result.outcome == Outcome::not_delaunay
-                                                 ? std::string(to_string(tr.result.outcome))
-                                                 : describe(tr.result)];
+                ++t.details[{opos, kpos, pol}][tr.result.outcome == Outcome::not_delaunay
+                                                   ? std::string(to_string(tr.result.outcome))
+                                                   : describe(tr.result)];
                 std::size_t& taken = shrink_count[{opos, kpos, pol, int(o)}];
-                if (taken < options.shrink_per_class && tr.result.outcome != Outcome::guard) {
+                if (taken < plan.shrink_per_class && tr.result.outcome != Outcome::guard) {
                     ++taken;
-                    to_shrink.push_back({&c, kpos, tr});
+                    to_shrink.push_back({si, kpos, tr});
                 }
             }
-            study.runs.push_back(tr);
+            t.study.runs.push_back(tr);
         }
     }
 
-    for (std::size_t op = 0; op < methods.size(); ++op) {
-        for (std::size_t b = 0; b < bits.size(); ++b) {
-            PrecisionRate rate{methods[op], bits[b], 0, 0};
-            for (const Chunk& c : chunks) {
-                rate.wrong += c.wrong_at[op * bits.size() + b];
+    for (std::size_t op = 0; op < plan.methods.size(); ++op) {
+        for (std::size_t b = 0; b < plan.bits.size(); ++b) {
+            PrecisionRate rate{plan.methods[op], plan.bits[b], 0, 0};
+            for (const SetResult& r : results) {
+                rate.wrong += r.wrong_at[op * plan.bits.size() + b];
                 ++rate.runs;
             }
-            study.precision.push_back(rate);
+            t.study.precision.push_back(rate);
         }
     }
 
-    // The method's cells: "algorithm" (only when several run) and "order".
-    const auto method_cells = [&](const Method& m) {
+    // The work of each method, per family and over all families.
+    for (const Method& m : plan.work_methods) {
+        t.overall.push_back({plan.families.front(), m.order, m.algorithm, 0, 0, {}, 0, 0, 0});
+    }
+    for (testing::Family f : plan.families) {
+        for (std::size_t o = 0; o < plan.work_methods.size(); ++o) {
+            const Method& m = plan.work_methods[o];
+            OrderWork w{f, m.order, m.algorithm, 0, 0, {}, 0, 0, 0};
+            for (std::size_t si = 0; si < results.size(); ++si) {
+                if (plan.sets[si].family != f) continue;
+                const WorkSample& s = results[si].work[o];
+                ++w.sets;
+                w.points += results[si].points.size();
+                w.counters += s.counters;
+                w.distance_comparisons += s.distance_comparisons;
+                w.merges += s.strips - 1;
+                w.certified += s.certified;
+            }
+            OrderWork& all = t.overall[o];
+            all.sets += w.sets;
+            all.points += w.points;
+            all.counters += w.counters;
+            all.distance_comparisons += w.distance_comparisons;
+            all.merges += w.merges;
+            all.certified += w.certified;
+            t.study.work.push_back(w);
+        }
+    }
+
+    // Shrink the chosen wrong outcomes (in parallel; each is a pure function of its input).
+    std::vector<std::vector<Point2>> shrunk(to_shrink.size());
+    {
+        Progress shrink_progress("shrinking", to_shrink.size(), run.progress);
+        for_each_chunk(to_shrink.size(), run.jobs, &shrink_progress, [&](std::size_t i) {
+            const Candidate& c = to_shrink[i];
+            shrunk[i] =
+                shrink_failing_input(results[c.set].points, plan.kernels[c.kernel], c.run.policy,
+                                     c.run.result, Method(c.run.algorithm, c.run.order));
+        });
+    }
+    for (std::size_t i = 0; i < to_shrink.size(); ++i) {
+        const Candidate& c = to_shrink[i];
+        t.fixtures.push_back(make_fixture(c.run, plan.kernels[c.kernel],
+                                          results[c.set].points.size(), std::move(shrunk[i]), run));
+        t.study.fixtures.push_back(t.fixtures.back().fixture);
+    }
+    return t;
+}
+
+std::vector<std::string> join(std::vector<std::string> a, const std::vector<std::string>& b) {
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+}
+
+/// The columns that name a method in the report's tables: "algorithm" (only when several
+/// run) and "order".
+struct MethodColumns {
+    bool algorithm_column = false;
+
+    std::vector<std::string> cells(const Method& m) const {
         std::vector<std::string> cells;
         if (algorithm_column) cells.emplace_back(delaunay::to_string(m.algorithm));
         cells.push_back(order_name(m));
         return cells;
-    };
-    const auto method_header = [&](std::vector<std::string> before,
-                                   std::vector<std::string> after) {
+    }
+    std::vector<std::string> header(std::vector<std::string> before,
+                                    const std::vector<std::string>& after) const {
         if (algorithm_column) before.emplace_back("algorithm");
         before.emplace_back("order");
-        before.insert(before.end(), after.begin(), after.end());
-        return before;
-    };
-    const auto join = [](std::vector<std::string> a, const std::vector<std::string>& b) {
-        a.insert(a.end(), b.begin(), b.end());
-        return a;
-    };
-    study.table.header = method_header({"family"}, {"kernel", "incircle"});
-    for (Outcome o : all_outcomes) study.table.header.emplace_back(to_string(o));
-    for (std::size_t f = 0; f < families.size(); ++f) {
-        for (std::size_t op = 0; op < methods.size(); ++op) {
-            for (std::size_t k = 0; k < kernels.size(); ++k) {
+        return join(std::move(before), after);
+    }
+};
+
+/// The outcome counts per family, method, kernel and policy (the study's main table).
+Table outcome_table(const StudyPlan& plan, const StudyTotals& t, const MethodColumns& columns) {
+    Table table;
+    table.header = columns.header({"family"}, {"kernel", "incircle"});
+    for (Outcome o : all_outcomes) table.header.emplace_back(to_string(o));
+    for (std::size_t f = 0; f < plan.families.size(); ++f) {
+        for (std::size_t op = 0; op < plan.methods.size(); ++op) {
+            for (std::size_t k = 0; k < plan.kernels.size(); ++k) {
                 for (delaunay::InCirclePolicy p : both_policies) {
-                    const auto& row_counts = counts[{f, op, k, int(p)}];
+                    const OutcomeCounts& row_counts = count_at(t.counts, {f, op, k, int(p)});
                     std::vector<std::string> row =
-                        join(join({std::string(testing::family_name(families[f]))},
-                                  method_cells(methods[op])),
-                             {kernel_name(kernels[k]), std::string(policy_name(p))});
+                        join(join({std::string(testing::family_name(plan.families[f]))},
+                                  columns.cells(plan.methods[op])),
+                             {kernel_name(plan.kernels[k]), std::string(policy_name(p))});
                     for (std::uint64_t v : row_counts) row.push_back(std::to_string(v));
-                    study.table.rows.push_back(std::move(row));
+                    table.rows.push_back(std::move(row));
                 }
             }
         }
     }
+    return table;
+}
+
+/// The outcome counts per method, kernel and policy over every family, with the wrong
+/// outcomes by kind.
+Table summary_table(const StudyPlan& plan, const StudyTotals& t, const MethodColumns& columns) {
     Table summary;
-    summary.header = method_header({}, {"kernel", "incircle", "runs"});
+    summary.header = columns.header({}, {"kernel", "incircle", "runs"});
     for (Outcome o : all_outcomes) summary.header.emplace_back(to_string(o));
     summary.header.emplace_back("wrong outcomes by kind");
-    for (std::size_t op = 0; op < methods.size(); ++op) {
-        for (std::size_t k = 0; k < kernels.size(); ++k) {
+    for (std::size_t op = 0; op < plan.methods.size(); ++op) {
+        for (std::size_t k = 0; k < plan.kernels.size(); ++k) {
             for (delaunay::InCirclePolicy p : both_policies) {
-                const auto& t = totals[{op, k, int(p)}];
+                const OutcomeCounts& counts = count_at(t.totals, {op, k, int(p)});
                 std::uint64_t runs = 0;
-                for (std::uint64_t v : t) runs += v;
-                std::vector<std::string> row = join(
-                    method_cells(methods[op]),
-                    {kernel_name(kernels[k]), std::string(policy_name(p)), std::to_string(runs)});
-                for (std::uint64_t v : t) row.push_back(std::to_string(v));
+                for (std::uint64_t v : counts) runs += v;
+                std::vector<std::string> row =
+                    join(columns.cells(plan.methods[op]),
+                         {kernel_name(plan.kernels[k]), std::string(policy_name(p)),
+                          std::to_string(runs)});
+                for (std::uint64_t v : counts) row.push_back(std::to_string(v));
                 std::string kinds;
-                for (const auto& [what, n] : details[{op, k, int(p)}]) {
+                for (const auto& [what, n] : count_at(t.details, {op, k, int(p)})) {
                     kinds += (kinds.empty() ? "" : "; ") + what + ": " + std::to_string(n);
                 }
                 row.push_back(kinds.empty() ? "-" : kinds);
@@ -516,44 +698,19 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options,
             }
         }
     }
+    return summary;
+}
 
-    // The work of each method, per family and over all families (chunk order: the sums
-    // do not depend on which thread measured what).
-    std::vector<OrderWork> overall;
-    for (const Method& m : work_methods) {
-        overall.push_back({families.front(), m.order, m.algorithm, 0, 0, {}, 0, 0, 0});
-    }
-    for (testing::Family f : families) {
-        for (std::size_t o = 0; o < work_methods.size(); ++o) {
-            OrderWork w{f, work_methods[o].order, work_methods[o].algorithm, 0, 0, {}, 0, 0, 0};
-            for (const Chunk& c : chunks) {
-                if (c.family != f) continue;
-                const WorkSample& s = c.work[o];
-                ++w.sets;
-                w.points += c.points.size();
-                w.counters += s.counters;
-                w.distance_comparisons += s.distance_comparisons;
-                w.merges += s.strips - 1;
-                w.certified += s.certified;
-            }
-            OrderWork& all = overall[o];
-            all.sets += w.sets;
-            all.points += w.points;
-            all.counters += w.counters;
-            all.distance_comparisons += w.distance_comparisons;
-            all.merges += w.merges;
-            all.certified += w.certified;
-            study.work.push_back(w);
-        }
-    }
-    Table work_table;
-    work_table.header = method_header(
+/// The work per point of each method, per family, then over all families.
+Table work_table(const StudyTotals& t, const MethodColumns& columns) {
+    Table table;
+    table.header = columns.header(
         {"family"}, {"point sets", "points", "flips/point", "in-circle tests/point",
                      "orientations/point", "distance comparisons/point", "location steps/point",
                      "triangles created/point", "merges", "certified"});
-    const auto work_row = [&](std::string family, const OrderWork& w) {
-        work_table.rows.push_back(
-            join(join({std::move(family)}, method_cells(Method(w.algorithm, w.order))),
+    const auto row = [&](std::string family, const OrderWork& w) {
+        table.rows.push_back(
+            join(join({std::move(family)}, columns.cells(Method(w.algorithm, w.order))),
                  {std::to_string(w.sets), std::to_string(w.points),
                   per_point(w.counters.flips(), w.points),
                   per_point(incircle_tests(w.counters), w.points),
@@ -563,95 +720,68 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options,
                   per_point(w.counters.triangles_created, w.points), std::to_string(w.merges),
                   std::to_string(w.certified) + "/" + std::to_string(w.sets)}));
     };
-    for (const OrderWork& w : study.work) work_row(std::string(testing::family_name(w.family)), w);
-    for (const OrderWork& w : overall) work_row("all families", w);
+    for (const OrderWork& w : t.study.work) row(std::string(testing::family_name(w.family)), w);
+    for (const OrderWork& w : t.overall) row("all families", w);
+    return table;
+}
 
-    // Shrink the chosen wrong outcomes (in parallel; each is a pure function of its input).
-    std::vector<std::vector<Point2>> shrunk(to_shrink.size());
-    {
-        Progress shrink_progress("shrinking", to_shrink.size(), run.progress);
-        for_each_chunk(to_shrink.size(), run.jobs, &shrink_progress, [&](std::size_t i) {
-            const Candidate& c = to_shrink[i];
-            shrunk[i] = shrink_failing_input(c.chunk->points, kernels[c.kernel], c.run.policy,
-                                             c.run.result, Method(c.run.algorithm, c.run.order));
-        });
-    }
-    Table fixtures_table;
-    fixtures_table.header = method_header(
+/// The fixtures: file, method, kernel, policy, outcome, size, and whether they replay.
+Table fixtures_table(const StudyTotals& t, const MethodColumns& columns) {
+    Table table;
+    table.header = columns.header(
         {"fixture"}, {"kernel", "incircle", "outcome", "points (original)", "replays"});
-    for (std::size_t i = 0; i < to_shrink.size(); ++i) {
-        const Candidate& c = to_shrink[i];
-        const Kernel& k = kernels[c.kernel];
-        const std::string kname = kernel_name(k);
-        const Method method(c.run.algorithm, c.run.order);
-        const std::string oname = is_external(method)
-                                      ? order_name(method)
-                                      : std::string(delaunay::to_string(method.algorithm));
-        // The paper's order keeps the names fixtures had before orders existed; another
-        // algorithm's fixtures carry its name instead of an order.
-        const std::string file = "fixtures/" + std::string(to_string(c.run.result.outcome)) + "-" +
-                                 kernel_file_name(k) + "-" +
-                                 std::string(policy_name(c.run.policy)) +
-                                 (is_paper_order(method) ? "" : "-" + oname) + "-" +
-                                 std::string(testing::family_name(c.run.family)) + "-s" +
-                                 std::to_string(c.run.seed_index) + ".xy";
-        // The shrunk set's own classification (its detail may differ from the original's
-        // for invalid and not_delaunay outcomes, which shrink by outcome only).
-        const Classification now = classify_triangulation(shrunk[i], k, c.run.policy, method);
-        const std::string cmd_flags =
-            "--kernel " + kname + " --incircle " + std::string(policy_name(c.run.policy));
-        const std::vector<std::string> header{
-            "exidel study triangulation fixture: " + describe(now),
-            "kernel " + kname + ", incircle policy " + std::string(policy_name(c.run.policy)) +
-                (is_external(method) ? ", order " : ", algorithm ") + oname,
-            "family " + std::string(testing::family_name(c.run.family)) + ", seed index " +
-                std::to_string(c.run.seed_index) + " of study seed " + std::to_string(run.seed) +
-                ", " + std::to_string(c.chunk->points.size()) + " points shrunk to " +
-                std::to_string(shrunk[i].size()),
-            "reproduce: exidel study replay -i FILE " + cmd_flags + replay_order_flags(method),
-            "      and: exidel triangulate -i FILE " + cmd_flags + triangulate_order_flags(method) +
-                (now.outcome == Outcome::failure ? "   (exit status 1: triangulation failed)"
-                                                 : "   (output differs from --kernel exact)"),
-        };
-        write_text_file(run.out / file, fixture_text(shrunk[i], header));
-        study.fixtures.push_back({file, kname, c.run.policy, now, c.chunk->points.size(),
-                                  shrunk[i].size(), c.run.order, c.run.algorithm});
-        fixtures_table.rows.push_back(join(
-            join({"`" + file + "`"}, method_cells(method)),
-            {kname, std::string(policy_name(c.run.policy)), describe(now),
-             std::to_string(shrunk[i].size()) + " (" + std::to_string(c.chunk->points.size()) + ")",
-             now.outcome == c.run.result.outcome ? "yes" : "NO"}));
+    for (const ShrunkFixture& s : t.fixtures) {
+        const Fixture& f = s.fixture;
+        table.rows.push_back(
+            join(join({"`" + f.file + "`"}, columns.cells(Method(f.algorithm, f.order))),
+                 {f.kernel, std::string(policy_name(f.policy)), describe(f.result),
+                  std::to_string(f.size) + " (" + std::to_string(f.original_size) + ")",
+                  f.result.outcome == s.original ? "yes" : "NO"}));
     }
+    return table;
+}
+
+/// Writes the fixtures, the tables as CSV and the failure-rate plot into run.out, and
+/// returns the study with its main table and report.
+TriangulationStudy report_study(const StudyPlan& plan, StudyTotals t, const RunOptions& run) {
+    const MethodColumns columns{plan.algorithm_column};
+    TriangulationStudy& study = t.study;
+    study.table = outcome_table(plan, t, columns);
+    const Table summary = summary_table(plan, t, columns);
+    const Table work = work_table(t, columns);
+    const Table fixtures = fixtures_table(t, columns);
+    for (const ShrunkFixture& s : t.fixtures) write_text_file(run.out / s.fixture.file, s.text);
 
     write_text_file(run.out / "triangulation.csv", study.table.csv());
     write_text_file(run.out / "triangulation_summary.csv", summary.csv());
-    write_text_file(run.out / "triangulation_work.csv", work_table.csv());
+    write_text_file(run.out / "triangulation_work.csv", work.csv());
 
     std::string sizes_text;
-    for (std::size_t n : sizes) sizes_text += (sizes_text.empty() ? "" : ", ") + std::to_string(n);
+    for (std::size_t n : plan.sizes)
+        sizes_text += (sizes_text.empty() ? "" : ", ") + std::to_string(n);
     std::string orders_text;
-    for (delaunay::Strategy o : orders)
+    for (delaunay::Strategy o : plan.orders)
         orders_text += (orders_text.empty() ? "" : ", ") + std::string(delaunay::to_string(o));
     std::string others_text;
-    for (const Method& m : methods) {
+    for (const Method& m : plan.methods) {
         if (!is_external(m))
             others_text +=
                 ", and by the " + std::string(delaunay::to_string(m.algorithm)) + " algorithm";
     }
     study.report = Report("Triangulation outcomes per kernel and in-circle policy");
     std::string families_text;
-    for (testing::Family f : families) {
+    for (testing::Family f : plan.families) {
         families_text += (families_text.empty() ? "" : ", ") + std::string(testing::family_name(f));
     }
-    if (families.size() == testing::all_families().size())
+    if (plan.families.size() == testing::all_families().size())
         families_text = "Every family of lib/testing";
     study.report.paragraph(
-        families_text + ", " + std::to_string(seeds) + " point sets each (sizes " + sizes_text +
-        ", cycled; seed " + std::to_string(run.seed) +
+        families_text + ", " + std::to_string(plan.seeds) + " point sets each (sizes " +
+        sizes_text + ", cycled; seed " + std::to_string(run.seed) +
         "); every kernel and both in-circle "
         "policies triangulate the same point sets, in insertion order " +
         orders_text +
-        (orders.size() == 1 && orders.front() == delaunay::Strategy::lexicographic
+        (plan.orders.size() == 1 && plan.orders.front() == delaunay::Strategy::lexicographic
              ? " (the paper's algorithm)"
              : "") +
         others_text +
@@ -661,15 +791,15 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options,
         "finding in the last column), **failure** (the algorithm detected the inconsistency and "
         "stopped), **guard** (the predicate-call budget of 64 n^2 + 10^6 ran out; never "
         "expected).");
-    study.report.append(family_definitions(families));
+    study.report.append(family_definitions(plan.families));
     study.report.table(summary);
     study.report.paragraph(
         "Minimal failing inputs (delta debugging until no single point can be removed), "
         "written as fixtures in hex floats:");
-    if (fixtures_table.rows.empty()) {
+    if (fixtures.rows.empty()) {
         study.report.paragraph("(no wrong outcome, nothing to shrink)");
     } else {
-        study.report.table(fixtures_table);
+        study.report.table(fixtures);
     }
     study.report.heading("Work per insertion order");
     study.report.paragraph(
@@ -698,27 +828,28 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options,
         "flips "
         "would have removed); for randomized, Lawson's flips. "
         "merges: strips merged over all sets; certified: results the exact certifier accepted.");
-    study.report.table(work_table);
+    study.report.table(work);
     // Failure rate against MPFR precision: one line per method.
     Table precision_table;
-    precision_table.header = method_header({}, {});
-    for (unsigned b : bits) precision_table.header.push_back("p = " + std::to_string(b));
+    precision_table.header = columns.header({}, {});
+    for (unsigned b : plan.bits) precision_table.header.push_back("p = " + std::to_string(b));
     LinePlot plot;
     plot.title =
         "Triangulations not certified Delaunay, MPFR kernel at p bits (determinant policy)";
     plot.x_label = "significand bits p";
     plot.y_label = "share of point sets with a wrong outcome";
-    for (std::size_t op = 0; op < methods.size(); ++op) {
-        std::vector<std::string> row = method_cells(methods[op]);
+    for (std::size_t op = 0; op < plan.methods.size(); ++op) {
+        std::vector<std::string> row = columns.cells(plan.methods[op]);
         Series series;
-        series.name =
-            algorithm_column ? std::string(delaunay::to_string(methods[op].algorithm)) : "";
-        if (is_external(methods[op])) {
-            series.name +=
-                (series.name.empty() ? "" : " ") + std::string("(") + order_name(methods[op]) + ")";
+        series.name = plan.algorithm_column
+                          ? std::string(delaunay::to_string(plan.methods[op].algorithm))
+                          : "";
+        if (is_external(plan.methods[op])) {
+            series.name += (series.name.empty() ? "" : " ") + std::string("(") +
+                           order_name(plan.methods[op]) + ")";
         }
-        for (std::size_t b = 0; b < bits.size(); ++b) {
-            const PrecisionRate& r = study.precision[op * bits.size() + b];
+        for (std::size_t b = 0; b < plan.bits.size(); ++b) {
+            const PrecisionRate& r = study.precision[op * plan.bits.size() + b];
             row.push_back(std::to_string(r.wrong) + "/" + std::to_string(r.runs));
             series.x.push_back(double(r.bits));
             series.y.push_back(r.runs ? double(r.wrong) / double(r.runs) : 0.0);
@@ -746,7 +877,16 @@ TriangulationStudy run_triangulation_study(const TriangulationOptions& options,
     study.report.link("triangulation_summary.csv", "triangulation_summary.csv");
     study.report.link("triangulation_work.csv", "triangulation_work.csv");
     study.report.link("triangulation_precision.csv", "triangulation_precision.csv");
-    return study;
+    return std::move(t.study);
+}
+
+}  // namespace
+
+TriangulationStudy run_triangulation_study(const TriangulationOptions& options,
+                                           const RunOptions& run) {
+    const StudyPlan plan = plan_study(options, run);
+    const std::vector<SetResult> results = run_study(plan, run);
+    return report_study(plan, aggregate_study(plan, results, run), run);
 }
 
 }  // namespace exidel::research
