@@ -56,10 +56,7 @@ int run(const std::string& points_path, const std::string& tri_path,
         std::optional<io::PointFormat> input_format, std::optional<io::TriangulationFormat> format,
         const std::optional<io::Columns>& columns, const CommandLine& cli) {
     const io::PointFormat pf = input_format.value_or(io::point_format_from_path(points_path));
-    if (columns && pf != io::PointFormat::xy) {
-        return cli.usage_error("--columns applies to xy input, not to " +
-                               std::string(io::to_string(pf)));
-    }
+    if (const std::optional<std::string> e = columns_error(columns, pf)) return cli.usage_error(*e);
     const std::optional<io::TriangulationFormat> tf =
         format ? format : io::triangulation_format_from_path(tri_path);
     if (!tf || (*tf != io::TriangulationFormat::json && *tf != io::TriangulationFormat::ele)) {
@@ -109,22 +106,9 @@ int certify_command(std::span<const std::string_view> args) {
     std::optional<io::TriangulationFormat> format;
     std::optional<io::Columns> columns;
     app.add_option("FILES", files);
-    app.add_option_function<std::string>("--input-format", [&](const std::string& v) {
-        input_format = io::point_format_from_name(v);
-        if (!input_format) {
-            throw std::invalid_argument("--input-format takes xy, json, node or f64, got '" + v +
-                                        "'");
-        }
-    });
-    app.add_option_function<std::string>("-f,--format", [&](const std::string& v) {
-        format = io::triangulation_format_from_name(v);
-        if (!format) throw std::invalid_argument("--format takes json or ele, got '" + v + "'");
-    });
-    app.add_option_function<std::string>("--columns", [&](const std::string& spec) {
-        std::string error;
-        columns = io::parse_columns(spec, error);
-        if (!columns) throw std::invalid_argument("--columns: " + error);
-    });
+    add_point_format_option(app, input_format);
+    add_parsed(app, "-f,--format", "json or ele", format, io::triangulation_format_from_name);
+    add_columns_option(app, columns);
     if (const std::optional<int> status = cli.parse(args)) return *status;
     if (files.size() != 2) {
         return cli.usage_error("expected two files, POINTS and TRIANGULATION, got " +

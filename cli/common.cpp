@@ -7,6 +7,8 @@
 #include <type_traits>
 #include <variant>
 
+#include "exidel/delaunay/triangulate.hpp"
+
 namespace exidel::cli {
 
 const std::string_view point_input_help =
@@ -23,6 +25,11 @@ else xy:
   f64   raw little-endian float64 pairs x0 y0 x1 y1 ...
 Text coordinates are decimal or C99 hex floats (0x1.8p-3; json: decimal only),
 )";
+
+std::string point_command_help(std::string_view head, std::string_view tail) {
+    return std::string(head) + std::string(point_input_help) + std::string(tail) +
+           delaunay::algorithm_help() + "\nKernels:\n" + kernel_help();
+}
 
 void add_algorithm_option(CLI::App& app, delaunay::Algorithm& target) {
     app.add_option_function<std::string>("-a,--algorithm", [&target](const std::string& name) {
@@ -52,12 +59,8 @@ void PointInput::add_file_options(CLI::App& app) {
 }
 
 void PointInput::add_format_options(CLI::App& app) {
-    add_parsed(app, "--input-format", "xy, json, node or f64", format, io::point_format_from_name);
-    app.add_option_function<std::string>("--columns", [this](const std::string& spec) {
-        std::string error;
-        columns = io::parse_columns(spec, error);
-        if (!columns) throw std::invalid_argument("--columns: " + error);
-    });
+    add_point_format_option(app, format);
+    add_columns_option(app, columns);
 }
 
 std::optional<std::string> PointInput::take_files() {
@@ -72,9 +75,7 @@ io::PointFormat PointInput::resolved_format() const {
 }
 
 std::optional<std::string> PointInput::columns_error() const {
-    const io::PointFormat f = resolved_format();
-    if (!columns || f == io::PointFormat::xy) return std::nullopt;
-    return "--columns applies to xy input, not to " + std::string(io::to_string(f));
+    return cli::columns_error(columns, resolved_format());
 }
 
 std::optional<io::PointFile> PointInput::read(unsigned threads, Progress& progress) const {
@@ -89,6 +90,46 @@ std::optional<io::PointFile> PointInput::read(unsigned threads, Progress& progre
         std::cerr << "exidel: " << e.what() << '\n';
         return std::nullopt;
     }
+}
+
+void PointCommand::add_input_output_options(CLI::App& app) {
+    input.add_file_options(app);
+    output_option_ = app.add_option("-o,--output", output);
+    app.add_option("-k,--kernel", kernel);
+    add_algorithm_option(app, algorithm);
+}
+
+void PointCommand::add_threads_option(CLI::App& app) {
+    add_parsed(app, "--threads", "a whole number from 1 to 1024", threads,
+               [](const std::string& v) { return whole_number(v, 1024); });
+}
+
+void PointCommand::add_report_options(CLI::App& app) {
+    app.add_flag("--stats", stats);
+    app.add_flag("-q,--quiet", quiet);
+}
+
+std::optional<int> PointCommand::parse(CommandLine& cli, std::span<const std::string_view> args) {
+    if (const std::optional<int> status = cli.parse(args)) return *status;
+    if (const std::optional<std::string> e = input.take_files()) return cli.usage_error(*e);
+    if (output_option_->count() > 1) return cli.usage_error("more than one output file given");
+    return std::nullopt;
+}
+
+std::optional<AnyKernel> PointCommand::checked_kernel(std::string& error) const {
+    std::optional<AnyKernel> k = parse_kernel(kernel, error);
+    if (!k) return std::nullopt;
+    if (std::optional<std::string> e = input.columns_error()) {
+        error = std::move(*e);
+        return std::nullopt;
+    }
+    return k;
+}
+
+bool PointCommand::open_output(std::optional<PendingFile>& file) const {
+    return reported([&] {
+        if (!to_stdout()) file.emplace(*output);
+    });
 }
 
 Triangulated triangulate_points(const AnyKernel& kernel, std::span<const Point2> points,
@@ -139,6 +180,50 @@ void print_triangulation_failure(std::ostream& err, const Triangulated& t) {
             << "(adaptive, the default) triangulates every finite input.";
     }
     err << '\n';
+}
+
+PointRun::PointRun(const PointCommand& command, Clock::time_point start)
+    : progress(!command.quiet), command_(command), start_(start) {}
+
+std::optional<io::PointFile> PointRun::read() {
+    const Clock::time_point start = Clock::now();
+    std::optional<io::PointFile> points = command_.input.read(command_.threads, progress);
+    if (points) times.read = ms_since(start);
+    return points;
+}
+
+Triangulated PointRun::triangulate(const AnyKernel& kernel, std::span<const Point2> points,
+                                   const delaunay::Options& options, bool counters) {
+    progress.phase("triangulating " + std::to_string(points.size()) + " points");
+    Triangulated t = triangulate_points(kernel, points, options, counters);
+    times.triangulate = t.ms;
+    if (!t.result.ok()) {
+        progress.stop();
+        print_triangulation_failure(std::cerr, t);
+    }
+    return t;
+}
+
+bool PointRun::write(std::optional<PendingFile>& output, const Writer& write,
+                     std::span<const BesideFile> beside) {
+    progress.phase("writing");
+    const Clock::time_point start = Clock::now();
+    const bool ok = reported(
+        [&] {
+            if (!output) {
+                write_stdout(write);
+                return;
+            }
+            write_into(*output, write);
+            for (const BesideFile& f : beside) write_into(f.file, f.write);
+            output->commit();
+            for (const BesideFile& f : beside) f.file.commit();
+        },
+        &progress);
+    if (!ok) return false;
+    times.write = ms_since(start);
+    progress.stop();
+    return true;
 }
 
 double stats_ms(double ms) { return std::round(ms * 1e6) / 1e6; }

@@ -1,47 +1,36 @@
 // exidel CLI (internal): what the commands that triangulate a point file share (exidel
-// triangulate, exidel voronoi): their value options, the point input (-i/--input FILE or
-// FILE, --input-format, --columns), the triangulation step and its failure message, the
-// output format and file, and the --stats line's layout.
+// triangulate, exidel voronoi): their common options (PointCommand), the point input
+// (-i/--input FILE or FILE, --input-format, --columns), the steps of a run (PointRun:
+// read, triangulate and its failure message, write the output into its pending file,
+// finish with --stats), the output format, and the --stats line's layout.
 #pragma once
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstddef>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <thread>
 #include <vector>
 
 #include "exidel/delaunay/algorithms.hpp"
 #include "exidel/delaunay/result.hpp"
-#include "exidel/delaunay/triangulate.hpp"
 #include "exidel/io/points.hpp"
 #include "exidel/predicates/registry.hpp"
+#include "options.hpp"
 #include "output.hpp"
 #include "progress.hpp"
 
 namespace exidel::cli {
-
-// Adds an option whose value `parse` turns into `target`; a value it rejects (returns
-// nothing for) is a usage error "--NAME takes EXPECTED, got 'VALUE'".
-template <class T, class Parse>
-void add_parsed(CLI::App& app, const std::string& names, const std::string& expected, T& target,
-                Parse parse) {
-    const std::string name = names.substr(names.rfind(',') + 1);
-    app.add_option_function<std::string>(names, [=, &target](const std::string& value) {
-        const auto parsed = parse(value);
-        if (!parsed) {
-            throw std::invalid_argument(name + " takes " + expected + ", got '" + value + "'");
-        }
-        target = static_cast<T>(*parsed);
-    });
-}
 
 /// -a/--algorithm NAME: a name of the registry (algorithms.hpp), else a usage error that
 /// lists them.
@@ -57,6 +46,10 @@ double ms_since(Clock::time_point start);
 /// The help texts' paragraph on the input, from "Input (" to the line starting "Text
 /// coordinates ..."; each command ends its sentence (what duplicates do).
 extern const std::string_view point_input_help;
+
+/// A point command's --help: `head`, point_input_help, `tail` (which ends with the line
+/// "Algorithms:"), the algorithms, then "Kernels:" and the kernels.
+std::string point_command_help(std::string_view head, std::string_view tail);
 
 /// The points a command reads: -i/--input FILE or a positional FILE (standard input when
 /// neither is given, or '-'), in --input-format, else the format of the file's extension,
@@ -89,6 +82,41 @@ struct PointInput {
 private:
     const CLI::Option* input_option_ = nullptr;
     std::vector<std::string> files_;
+};
+
+/// The options exidel triangulate and exidel voronoi both take, declared by the add_*
+/// functions in the order each command lists them: the point input, -o/--output,
+/// -k/--kernel, -a/--algorithm, --threads, --stats and -q/--quiet.
+struct PointCommand {
+    PointInput input;
+    std::optional<std::string> output;
+    std::string kernel = "adaptive";
+    delaunay::Algorithm algorithm = delaunay::Algorithm::external;
+    unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+    bool stats = false;
+    bool quiet = false;
+
+    /// Declares -i/--input, FILE, -o/--output, -k/--kernel and -a/--algorithm.
+    void add_input_output_options(CLI::App& app);
+    /// Declares --threads.
+    void add_threads_option(CLI::App& app);
+    /// Declares --stats and -q/--quiet.
+    void add_report_options(CLI::App& app);
+    /// Parses `args` into the options declared on `cli`; more than one input or output
+    /// file is a usage error. Nothing when the command runs, else its exit status.
+    std::optional<int> parse(CommandLine& cli, std::span<const std::string_view> args);
+
+    /// Whether the output goes to standard output (no -o, or '-').
+    bool to_stdout() const { return !output || *output == "-"; }
+    /// The checks made before any work: the kernel --kernel names, else nothing and
+    /// `error` says why (an unknown kernel, or --columns with a format other than xy).
+    std::optional<AnyKernel> checked_kernel(std::string& error) const;
+    /// Creates -o's temporary file (nothing for standard output). When it cannot:
+    /// "exidel: <why>" on standard error, and false.
+    bool open_output(std::optional<PendingFile>& file) const;
+
+private:
+    const CLI::Option* output_option_ = nullptr;
 };
 
 /// A triangulation run: its result, the kernel's name and exactness, its time.
@@ -128,6 +156,21 @@ std::optional<Format> output_format(const std::optional<Format>& given,
     return f;
 }
 
+/// Runs `step`; a std::runtime_error it throws (an I/O error) is printed as "exidel:
+/// <what>" on standard error, after stopping `progress` if given. Returns whether `step`
+/// succeeded.
+template <class Step>
+bool reported(Step step, Progress* progress = nullptr) {
+    try {
+        step();
+        return true;
+    } catch (const std::runtime_error& e) {
+        if (progress) progress->stop();
+        std::cerr << "exidel: " << e.what() << '\n';
+        return false;
+    }
+}
+
 /// Writes through `write(std::ostream&)` into `file`'s temporary; throws on I/O errors.
 template <class Write>
 void write_into(const PendingFile& file, Write write) {
@@ -145,19 +188,58 @@ void write_stdout(Write write) {
     if (!std::cout) throw std::runtime_error("error while writing the output");
 }
 
-/// Runs `write` (the output step); an I/O error it throws (std::runtime_error) stops
-/// `progress` and is printed as "exidel: <what>". Returns whether `write` succeeded.
-template <class Write>
-bool written(Progress& progress, Write write) {
-    try {
-        write();
-        return true;
-    } catch (const std::runtime_error& e) {
+/// What the output step writes into one file: `write(std::ostream&)`.
+using Writer = std::function<void(std::ostream&)>;
+
+/// A file written beside the output (exidel triangulate's .node): its pending file and
+/// what goes into it.
+struct BesideFile {
+    PendingFile& file;
+    Writer write;
+};
+
+/// The times of the steps every run has, in milliseconds, as --stats prints them.
+struct StepTimes {
+    double read = 0, triangulate = 0, write = 0, total = 0;
+};
+
+/// One run of exidel triangulate or exidel voronoi once its output files exist: the
+/// progress line, the steps both commands take (each saying on standard error why it
+/// failed), and their times. A command that fails after reading returns finish().
+class PointRun {
+public:
+    /// `start`: when the command started (the total time counts from there).
+    PointRun(const PointCommand& command, Clock::time_point start);
+
+    /// Reads the points (times.read). Nothing when they cannot be read.
+    std::optional<io::PointFile> read();
+    /// Triangulates `points` (times.triangulate), instrumented (counters) iff `counters`.
+    /// A failed triangulation is said with print_triangulation_failure.
+    Triangulated triangulate(const AnyKernel& kernel, std::span<const Point2> points,
+                             const delaunay::Options& options, bool counters);
+    /// The output step (times.write): `write` on standard output when `output` holds no
+    /// file, else into its temporary file, then each file `beside` into its own; then
+    /// every file is renamed into place, the output first. An I/O error is said, and
+    /// gives false; success stops the progress line.
+    bool write(std::optional<PendingFile>& output, const Writer& write,
+               std::span<const BesideFile> beside = {});
+    /// The end of every run: stops the progress line, takes the total time, calls
+    /// `print_stats()` when --stats was given, and returns `status`.
+    template <class PrintStats>
+    int finish(int status, PrintStats print_stats) {
         progress.stop();
-        std::cerr << "exidel: " << e.what() << '\n';
-        return false;
+        times.total = ms_since(start_);
+        if (command_.stats) print_stats();
+        return status;
     }
-}
+
+    Progress progress;
+    StepTimes times;
+
+private:
+    const PointCommand& command_;
+    Clock::time_point start_;
+};
 
 /// Milliseconds as --stats prints them: six decimals.
 double stats_ms(double ms);

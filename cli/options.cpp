@@ -61,4 +61,22 @@ int CommandLine::usage_error(const std::string& message) const {
     return exit_usage;
 }
 
+void add_point_format_option(CLI::App& app, std::optional<io::PointFormat>& target) {
+    add_parsed(app, "--input-format", "xy, json, node or f64", target, io::point_format_from_name);
+}
+
+void add_columns_option(CLI::App& app, std::optional<io::Columns>& target) {
+    app.add_option_function<std::string>("--columns", [&target](const std::string& spec) {
+        std::string error;
+        target = io::parse_columns(spec, error);
+        if (!target) throw std::invalid_argument("--columns: " + error);
+    });
+}
+
+std::optional<std::string> columns_error(const std::optional<io::Columns>& columns,
+                                         io::PointFormat format) {
+    if (!columns || format == io::PointFormat::xy) return std::nullopt;
+    return "--columns applies to xy input, not to " + std::string(io::to_string(format));
+}
+
 }  // namespace exidel::cli

@@ -8,14 +8,19 @@
 //     unknown options and values that an option's callback rejects by throwing
 //     std::invalid_argument are all usage errors;
 //   - an option given twice keeps its last value (a command counts what must not repeat).
+// And the options several subcommands declare alike: add_parsed (a value parsed by a
+// function, with one form of error), and a point file's --input-format and --columns.
 #pragma once
 
 #include <CLI/CLI.hpp>
 
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <string_view>
+
+#include "exidel/io/points.hpp"
 
 namespace exidel::cli {
 
@@ -40,5 +45,28 @@ private:
     std::string help_;
     bool help_on_error_;
 };
+
+// Adds an option whose value `parse` turns into `target`; a value it rejects (returns
+// nothing for) is a usage error "--NAME takes EXPECTED, got 'VALUE'".
+template <class T, class Parse>
+void add_parsed(CLI::App& app, const std::string& names, const std::string& expected, T& target,
+                Parse parse) {
+    const std::string name = names.substr(names.rfind(',') + 1);
+    app.add_option_function<std::string>(names, [=, &target](const std::string& value) {
+        const auto parsed = parse(value);
+        if (!parsed) {
+            throw std::invalid_argument(name + " takes " + expected + ", got '" + value + "'");
+        }
+        target = static_cast<T>(*parsed);
+    });
+}
+
+/// --input-format xy|json|node|f64: the format of a point file.
+void add_point_format_option(CLI::App& app, std::optional<io::PointFormat>& target);
+/// --columns X,Y: the two fields of a wider xy file that hold x and y.
+void add_columns_option(CLI::App& app, std::optional<io::Columns>& target);
+/// The usage error of --columns with a point format other than xy, if given.
+std::optional<std::string> columns_error(const std::optional<io::Columns>& columns,
+                                         io::PointFormat format);
 
 }  // namespace exidel::cli

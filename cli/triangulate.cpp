@@ -16,7 +16,6 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -25,7 +24,6 @@
 #include "common.hpp"
 #include "exidel/delaunay/algorithms.hpp"
 #include "exidel/delaunay/certify.hpp"
-#include "exidel/delaunay/triangulate.hpp"
 #include "exidel/io/points.hpp"
 #include "exidel/io/triangulation.hpp"
 #include "options.hpp"
@@ -136,26 +134,13 @@ Exit status: 0 success, 1 bad input, failed triangulation or I/O error, 2 bad op
 Algorithms:
 )";
 
-std::string triangulate_help() {
-    return std::string(triangulate_help_head) + std::string(point_input_help) +
-           std::string(triangulate_help_tail) + delaunay::algorithm_help() + "\nKernels:\n" +
-           kernel_help();
-}
-
-struct Options {
-    PointInput input;
-    std::optional<std::string> output;
-    std::string kernel = "adaptive";
+struct Options : PointCommand {
     delaunay::InCirclePolicy incircle = delaunay::InCirclePolicy::determinant;
-    delaunay::Algorithm algorithm = delaunay::Algorithm::external;
     delaunay::Strategy strategy = delaunay::Strategy::automatic;
-    unsigned threads = std::max(1u, std::thread::hardware_concurrency());
     std::size_t strip_points = 0;
     std::size_t strip_tiles = 0;
     std::optional<io::TriangulationFormat> format;
     bool certify = false;
-    bool stats = false;
-    bool quiet = false;
 };
 
 std::string_view policy_name(delaunay::InCirclePolicy p) {
@@ -169,14 +154,10 @@ bool takes_order(delaunay::Algorithm a) {
     return false;
 }
 
-// The time spent in each step, in milliseconds.
-struct Times {
-    double read = 0, triangulate = 0, certify = 0, write = 0, total = 0;
-};
-
 // One JSON object on one line, keys in a fixed order (nlohmann's ordered_json).
 void print_stats(std::ostream& err, std::size_t points, const delaunay::Result& r,
-                 const std::string& kernel, const Options& o, const Times& times) {
+                 const std::string& kernel, const Options& o, const StepTimes& times,
+                 double certify_ms) {
     const delaunay::Triangulation& t = r.triangulation;
     nlohmann::ordered_json counters;
     r.counters.for_each([&](std::string_view name, std::uint64_t v) { counters[name] = v; });
@@ -210,7 +191,7 @@ void print_stats(std::ostream& err, std::size_t points, const delaunay::Result& 
         {"failure", failure},
         {"read_ms", stats_ms(times.read)},
         {"triangulate_ms", stats_ms(times.triangulate)},
-        {"certify_ms", stats_ms(times.certify)},
+        {"certify_ms", stats_ms(certify_ms)},
         {"write_ms", stats_ms(times.write)},
         {"total_ms", stats_ms(times.total)},
     };
@@ -239,11 +220,8 @@ void print_findings(std::ostream& err, const delaunay::Certificate& c) {
 int run(const Options& o, const CommandLine& cli) {
     const Clock::time_point run_start = Clock::now();
     std::string error;
-    const std::optional<AnyKernel> kernel = parse_kernel(o.kernel, error);
+    const std::optional<AnyKernel> kernel = o.checked_kernel(error);
     if (!kernel) return cli.usage_error(error);
-    const bool from_stdin = o.input.from_stdin();
-    const bool to_stdout = !o.output || *o.output == "-";
-    if (const std::optional<std::string> e = o.input.columns_error()) return cli.usage_error(*e);
     const std::optional<io::TriangulationFormat> format =
         output_format(o.format, o.output, io::TriangulationFormat::json,
                       io::triangulation_format_from_path, ".json .ele .off .svg", error);
@@ -251,31 +229,25 @@ int run(const Options& o, const CommandLine& cli) {
 
     // The output files exist (as temporaries) from here on, removed again on any failure.
     std::optional<PendingFile> output, node_output;
-    try {
-        if (!to_stdout) output.emplace(*o.output);
-        if (!to_stdout && *format == io::TriangulationFormat::ele) {
-            const std::string& out = *o.output;
-            const std::string node =
-                (out.ends_with(".ele") ? out.substr(0, out.size() - 4) : out) + ".node";
-            if (from_stdin || !same_file(node, *o.input.path)) node_output.emplace(node);
-        }
-    } catch (const std::runtime_error& e) {
-        std::cerr << "exidel: " << e.what() << '\n';
-        return exit_failure;
+    if (!o.open_output(output)) return exit_failure;
+    if (output && *format == io::TriangulationFormat::ele) {
+        const std::string& out = *o.output;
+        const std::string node =
+            (out.ends_with(".ele") ? out.substr(0, out.size() - 4) : out) + ".node";
+        const bool opened = reported([&] {
+            if (o.input.from_stdin() || !same_file(node, *o.input.path)) node_output.emplace(node);
+        });
+        if (!opened) return exit_failure;
     }
-    Progress progress(!o.quiet);
-    Times times;
+    PointRun steps(o, run_start);
+    double certify_ms = 0;
 
-    // Read.
-    const Clock::time_point read_start = Clock::now();
-    const std::optional<io::PointFile> input = o.input.read(o.threads, progress);
+    const std::optional<io::PointFile> input = steps.read();
     if (!input) return exit_failure;
     const std::vector<Point2>& points = input->points;
-    times.read = ms_since(read_start);
 
     // Triangulate: the only timed step. Counters only when asked for, so a plain run is
     // the uninstrumented algorithm.
-    progress.phase("triangulating " + std::to_string(points.size()) + " points");
     const delaunay::Options options = delaunay::Options{}
                                           .with_algorithm(o.algorithm)
                                           .with_incircle(o.incircle)
@@ -283,31 +255,24 @@ int run(const Options& o, const CommandLine& cli) {
                                           .with_threads(o.threads)
                                           .with_strip_points(o.strip_points)
                                           .with_strip_tiles(o.strip_tiles);
-    const Triangulated triangulated = triangulate_points(*kernel, points, options, o.stats);
+    const Triangulated triangulated = steps.triangulate(*kernel, points, options, o.stats);
     const delaunay::Result& result = triangulated.result;
-    times.triangulate = triangulated.ms;
     const auto finish = [&](int status) {
-        progress.stop();
-        times.total = ms_since(run_start);
-        if (o.stats) {
-            print_stats(std::cerr, points.size(), result, triangulated.kernel_name, o, times);
-        }
-        return status;
+        return steps.finish(status, [&] {
+            print_stats(std::cerr, points.size(), result, triangulated.kernel_name, o, steps.times,
+                        certify_ms);
+        });
     };
-    if (!result.ok()) {
-        progress.stop();
-        print_triangulation_failure(std::cerr, triangulated);
-        return finish(exit_failure);
-    }
+    if (!result.ok()) return finish(exit_failure);
     const delaunay::Triangulation& tri = result.triangulation;
 
     if (o.certify) {
-        progress.phase("certifying " + std::to_string(tri.triangle_count()) + " triangles");
+        steps.progress.phase("certifying " + std::to_string(tri.triangle_count()) + " triangles");
         const Clock::time_point start = Clock::now();
         const delaunay::Certificate certificate = delaunay::certify(points, tri);
-        times.certify = ms_since(start);
+        certify_ms = ms_since(start);
         if (!certificate.ok()) {
-            progress.stop();
+            steps.progress.stop();
             std::cerr << "exidel: the result is not the Delaunay triangulation of the input ("
                       << certificate.total_findings << " findings; nothing written):\n";
             print_findings(std::cerr, certificate);
@@ -315,30 +280,21 @@ int run(const Options& o, const CommandLine& cli) {
         }
     }
 
-    // Write.
-    progress.phase("writing");
-    const Clock::time_point write_start = Clock::now();
     const io::WriteOptions write_options{input->index_base, o.threads};
-    const auto write = [&](std::ostream& out) {
-        io::write_triangulation(out, points, tri, *format, write_options);
-    };
-    const bool ok = written(progress, [&] {
-        if (!output) {
-            write_stdout(write);
-        } else {
-            write_into(*output, write);
-            if (node_output) {
-                write_into(*node_output, [&](std::ostream& out) {
-                    io::write_points(out, points, io::PointFormat::node, input->index_base);
-                });
-            }
-            output->commit();
-            if (node_output) node_output->commit();
-        }
-    });
-    if (!ok) return finish(exit_failure);
-    times.write = ms_since(write_start);
-    progress.stop();
+    std::vector<BesideFile> beside;
+    if (node_output) {
+        beside.push_back({*node_output, [&](std::ostream& out) {
+                              io::write_points(out, points, io::PointFormat::node,
+                                               input->index_base);
+                          }});
+    }
+    const bool written = steps.write(
+        output,
+        [&](std::ostream& out) {
+            io::write_triangulation(out, points, tri, *format, write_options);
+        },
+        beside);
+    if (!written) return finish(exit_failure);
     if (!o.quiet && tri.collinear) {
         const std::size_t distinct = points.size() - tri.duplicates.size();
         std::cerr << "exidel: note: no triangles: "
@@ -356,13 +312,11 @@ int run(const Options& o, const CommandLine& cli) {
 
 int triangulate_command(std::span<const std::string_view> args) {
     using delaunay::InCirclePolicy, delaunay::Strategy;
-    CommandLine cli("triangulate", triangulate_help());
+    CommandLine cli("triangulate",
+                    point_command_help(triangulate_help_head, triangulate_help_tail));
     CLI::App& app = cli.app;
     Options o;
-    o.input.add_file_options(app);
-    const CLI::Option* output = app.add_option("-o,--output", o.output);
-    app.add_option("-k,--kernel", o.kernel);
-    add_algorithm_option(app, o.algorithm);
+    o.add_input_output_options(app);
     add_parsed(app, "--incircle", "determinant or cosine", o.incircle,
                [](const std::string& v) -> std::optional<InCirclePolicy> {
                    if (v == "determinant") return InCirclePolicy::determinant;
@@ -378,8 +332,7 @@ int triangulate_command(std::span<const std::string_view> args) {
             }
             return {};
         });
-    add_parsed(app, "--threads", "a whole number from 1 to 1024", o.threads,
-               [](const std::string& v) { return whole_number(v, 1024); });
+    o.add_threads_option(app);
     add_parsed(app, "--strip-points",
                "a whole number from 1 to " + std::to_string(delaunay::detail::max_points),
                o.strip_points,
@@ -392,11 +345,8 @@ int triangulate_command(std::span<const std::string_view> args) {
                io::triangulation_format_from_name);
     o.input.add_format_options(app);
     app.add_flag("--certify", o.certify);
-    app.add_flag("--stats", o.stats);
-    app.add_flag("-q,--quiet", o.quiet);
-    if (const std::optional<int> status = cli.parse(args)) return *status;
-    if (const std::optional<std::string> e = o.input.take_files()) return cli.usage_error(*e);
-    if (output->count() > 1) return cli.usage_error("more than one output file given");
+    o.add_report_options(app);
+    if (const std::optional<int> status = o.parse(cli, args)) return *status;
     return run(o, cli);
 }
 

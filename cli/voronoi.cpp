@@ -4,12 +4,10 @@
 // -> read the input -> triangulate -> the Voronoi diagram (lib/delaunay, voronoi.hpp) ->
 // optionally clip it to a box -> write (lib/io, voronoi.hpp) into the temporary file,
 // renamed into place on success (or stdout). No failure leaves an output file behind.
-#include <algorithm>
 #include <iostream>
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <variant>
 #include <vector>
 
@@ -127,22 +125,9 @@ Exit status: 0 success, 1 bad input, failed triangulation or diagram, or I/O err
 Algorithms:
 )";
 
-std::string voronoi_help() {
-    return std::string(voronoi_help_head) + std::string(point_input_help) +
-           std::string(voronoi_help_tail) + delaunay::algorithm_help() + "\nKernels:\n" +
-           kernel_help();
-}
-
-struct Options {
-    PointInput input;
-    std::optional<std::string> output;
-    std::string kernel = "adaptive";
-    delaunay::Algorithm algorithm = delaunay::Algorithm::external;
-    unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+struct Options : PointCommand {
     std::optional<io::VoronoiFormat> format;
     std::optional<delaunay::Box> clip;
-    bool stats = false;
-    bool quiet = false;
 };
 
 // --clip's four words as a box: finite numbers with xmin < xmax and ymin < ymax.
@@ -165,9 +150,9 @@ delaunay::Box parse_box(const std::vector<std::string>& words) {
     return {v[0], v[1], v[2], v[3]};
 }
 
-// The time spent in each step, in milliseconds.
+// The time spent in the steps of its own, in milliseconds.
 struct Times {
-    double read = 0, triangulate = 0, voronoi = 0, clip = 0, write = 0, total = 0;
+    double voronoi = 0, clip = 0;
 };
 
 // What went wrong after reading, for --stats.
@@ -178,7 +163,8 @@ struct Failure {
 // One JSON object on one line, keys in a fixed order.
 void print_stats(std::ostream& err, std::size_t points, const Triangulated& t,
                  const delaunay::VoronoiDiagram& d, const delaunay::ClippedVoronoi* clipped,
-                 const std::optional<Failure>& failure, const Times& times) {
+                 const std::optional<Failure>& failure, const StepTimes& steps,
+                 const Times& times) {
     const delaunay::Triangulation& tri = t.result.triangulation;
     nlohmann::ordered_json failed;  // null when the run succeeded
     if (failure) {
@@ -203,12 +189,12 @@ void print_stats(std::ostream& err, std::size_t points, const Triangulated& t,
         {"cocircular_tests", d.cocircular_tests},
         {"cocircular_merges", d.cocircular_merges},
         {"failure", failed},
-        {"read_ms", stats_ms(times.read)},
-        {"triangulate_ms", stats_ms(times.triangulate)},
+        {"read_ms", stats_ms(steps.read)},
+        {"triangulate_ms", stats_ms(steps.triangulate)},
         {"voronoi_ms", stats_ms(times.voronoi)},
         {"clip_ms", stats_ms(times.clip)},
-        {"write_ms", stats_ms(times.write)},
-        {"total_ms", stats_ms(times.total)},
+        {"write_ms", stats_ms(steps.write)},
+        {"total_ms", stats_ms(steps.total)},
     };
     err << stats_line(stats);
 }
@@ -216,9 +202,8 @@ void print_stats(std::ostream& err, std::size_t points, const Triangulated& t,
 int run(const Options& o, const CommandLine& cli) {
     const Clock::time_point run_start = Clock::now();
     std::string error;
-    const std::optional<AnyKernel> kernel = parse_kernel(o.kernel, error);
+    const std::optional<AnyKernel> kernel = o.checked_kernel(error);
     if (!kernel) return cli.usage_error(error);
-    if (const std::optional<std::string> e = o.input.columns_error()) return cli.usage_error(*e);
     const std::optional<io::VoronoiFormat> format =
         output_format(o.format, o.output, io::VoronoiFormat::json, io::voronoi_format_from_path,
                       ".json .svg", error);
@@ -226,57 +211,41 @@ int run(const Options& o, const CommandLine& cli) {
 
     // The output file exists (as a temporary) from here on, removed again on any failure.
     std::optional<PendingFile> output;
-    try {
-        if (o.output && *o.output != "-") output.emplace(*o.output);
-    } catch (const std::runtime_error& e) {
-        std::cerr << "exidel: " << e.what() << '\n';
-        return exit_failure;
-    }
-    Progress progress(!o.quiet);
+    if (!o.open_output(output)) return exit_failure;
+    PointRun steps(o, run_start);
     Times times;
 
-    // Read.
-    const Clock::time_point read_start = Clock::now();
-    const std::optional<io::PointFile> input = o.input.read(o.threads, progress);
+    const std::optional<io::PointFile> input = steps.read();
     if (!input) return exit_failure;
     const std::vector<Point2>& points = input->points;
-    times.read = ms_since(read_start);
 
-    // Triangulate.
-    progress.phase("triangulating " + std::to_string(points.size()) + " points");
     const delaunay::Options options =
         delaunay::Options{}.with_algorithm(o.algorithm).with_threads(o.threads);
-    const Triangulated triangulated = triangulate_points(*kernel, points, options, false);
-    times.triangulate = triangulated.ms;
+    const Triangulated triangulated = steps.triangulate(*kernel, points, options, false);
     const delaunay::Triangulation& tri = triangulated.result.triangulation;
     delaunay::VoronoiDiagram diagram;
     std::optional<delaunay::ClippedVoronoi> clipped;
     std::optional<Failure> failure;
     const auto finish = [&](int status) {
-        progress.stop();
-        times.total = ms_since(run_start);
-        if (o.stats) {
+        return steps.finish(status, [&] {
             print_stats(std::cerr, points.size(), triangulated, diagram,
-                        clipped ? &*clipped : nullptr, failure, times);
-        }
-        return status;
+                        clipped ? &*clipped : nullptr, failure, steps.times, times);
+        });
     };
     if (!triangulated.result.ok()) {
-        progress.stop();
         const delaunay::Failure& f = *triangulated.result.failure;
         failure = Failure{"triangulate", std::string(delaunay::to_string(f.kind)), f.message};
-        print_triangulation_failure(std::cerr, triangulated);
         return finish(exit_failure);
     }
 
     // The diagram, with the kernel that triangulated (its in-circle test merges
     // cocircular triangles).
-    progress.phase("computing the Voronoi diagram");
+    steps.progress.phase("computing the Voronoi diagram");
     const Clock::time_point voronoi_start = Clock::now();
     try {
         std::visit([&](const auto& k) { diagram = delaunay::voronoi(points, tri, k); }, *kernel);
     } catch (const delaunay::VoronoiError& e) {
-        progress.stop();
+        steps.progress.stop();
         failure = Failure{"voronoi", std::string(to_string(e.status())), e.what()};
         std::cerr << "exidel: voronoi: " << e.what();
         if (e.status() == CircumcenterStatus::collinear && !triangulated.exact_kernel) {
@@ -289,33 +258,20 @@ int run(const Options& o, const CommandLine& cli) {
     times.voronoi = ms_since(voronoi_start);
 
     if (o.clip) {
-        progress.phase("clipping " + std::to_string(points.size()) + " cells");
+        steps.progress.phase("clipping " + std::to_string(points.size()) + " cells");
         const Clock::time_point start = Clock::now();
         clipped = delaunay::clip(diagram, points, tri, *o.clip);
         times.clip = ms_since(start);
     }
 
-    // Write.
-    progress.phase("writing");
-    const Clock::time_point write_start = Clock::now();
-    const auto write = [&](std::ostream& out) {
+    const bool written = steps.write(output, [&](std::ostream& out) {
         if (clipped) {
             io::write_voronoi(out, points, *clipped, *o.clip, *format);
         } else {
             io::write_voronoi(out, points, diagram, *format);
         }
-    };
-    const bool ok = written(progress, [&] {
-        if (!output) {
-            write_stdout(write);
-        } else {
-            write_into(*output, write);
-            output->commit();
-        }
     });
-    if (!ok) return finish(exit_failure);
-    times.write = ms_since(write_start);
-    progress.stop();
+    if (!written) return finish(exit_failure);
     if (!o.quiet && diagram.collinear) {
         const std::size_t distinct = points.size() - tri.duplicates.size();
         std::cerr << "exidel: note: no Voronoi vertices: ";
@@ -336,25 +292,18 @@ int run(const Options& o, const CommandLine& cli) {
 }  // namespace
 
 int voronoi_command(std::span<const std::string_view> args) {
-    CommandLine cli("voronoi", voronoi_help());
+    CommandLine cli("voronoi", point_command_help(voronoi_help_head, voronoi_help_tail));
     CLI::App& app = cli.app;
     Options o;
-    o.input.add_file_options(app);
-    const CLI::Option* output = app.add_option("-o,--output", o.output);
-    app.add_option("-k,--kernel", o.kernel);
-    add_algorithm_option(app, o.algorithm);
-    add_parsed(app, "--threads", "a whole number from 1 to 1024", o.threads,
-               [](const std::string& v) { return whole_number(v, 1024); });
+    o.add_input_output_options(app);
+    o.add_threads_option(app);
     add_parsed(app, "-f,--format", "json or svg", o.format, io::voronoi_format_from_name);
     app.add_option_function<std::vector<std::string>>(
            "--clip", [&](const std::vector<std::string>& words) { o.clip = parse_box(words); })
         ->expected(4);
     o.input.add_format_options(app);
-    app.add_flag("--stats", o.stats);
-    app.add_flag("-q,--quiet", o.quiet);
-    if (const std::optional<int> status = cli.parse(args)) return *status;
-    if (const std::optional<std::string> e = o.input.take_files()) return cli.usage_error(*e);
-    if (output->count() > 1) return cli.usage_error("more than one output file given");
+    o.add_report_options(app);
+    if (const std::optional<int> status = o.parse(cli, args)) return *status;
     return run(o, cli);
 }
 
