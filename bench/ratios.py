@@ -90,7 +90,7 @@ def print_tables(m, out=sys.stdout):
 
 
 def print_markdown(m, out=sys.stdout):
-    """The README's table: per predicate and input, double, adaptive (one call per query),
+    """The table of docs/benchmarks.md ("The plane"): per predicate and input, double, adaptive (one call per query),
     adaptive batched, CGAL, and the ratios adaptive / CGAL and adaptive / batched."""
     rows = table_rows(m)
     out.write("| predicate / input | double | adaptive | batched | CGAL Epick | "
@@ -111,7 +111,7 @@ def main():
     ap.add_argument("--run", metavar="BINARY", help="run this exidel_bench_predicates")
     ap.add_argument("--repetitions", type=int, default=5)
     ap.add_argument("--filter", default="", help="--benchmark_filter for --run")
-    ap.add_argument("--markdown", action="store_true", help="the README's table instead")
+    ap.add_argument("--markdown", action="store_true", help="the table of docs/benchmarks.md instead")
     args = ap.parse_args()
     if (args.json is None) == (args.run is None):
         ap.error("give either a JSON file or --run BINARY")

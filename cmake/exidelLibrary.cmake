@@ -12,6 +12,24 @@
 # independent code, so a shared exidel_research fails to link ("recompile with -fPIC").
 include_guard(GLOBAL)
 
+# exidel_add_object_library(<name> <sources...>): the part of a library that other exidel
+# targets link on their own, as the object library exidel_<name> (no alias, never
+# installed): its objects go into the library that lists $<TARGET_OBJECTS:exidel_<name>>,
+# and a target that links it gets them and its usage requirements. Same hygiene and
+# warnings as exidel_add_library; position-independent in a shared build (the Python
+# module sets it too).
+function(exidel_add_object_library name)
+  set(target exidel_${name})
+  add_library(${target} OBJECT ${ARGN})
+  target_include_directories(${target} PUBLIC $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>)
+  target_compile_features(${target} PUBLIC cxx_std_20)
+  target_compile_options(${target} PRIVATE -ffp-contract=off -fno-fast-math)
+  if(BUILD_SHARED_LIBS)
+    set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+  endif()
+  exidel_warnings(${target})
+endfunction()
+
 function(exidel_add_library name)
   set(target exidel_${name})
   if(name IN_LIST EXIDEL_PACKAGE_LIBRARIES)

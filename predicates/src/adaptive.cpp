@@ -9,17 +9,20 @@
 #include <cmath>
 #include <initializer_list>
 #include <limits>
+#include <span>
+#include <stdexcept>
 
 #include "exidel/predicates/constants.hpp"
 #include "exidel/predicates/exact.hpp"
-#include "adaptive_filter.hpp"
+#include "exidel/predicates/internal/adaptive_filter.hpp"
 #include "adaptive_stages.hpp"
-#include "adaptive_unchecked.hpp"
+#include "exidel/predicates/internal/adaptive_unchecked.hpp"
 #include "double_word.hpp"
 #include "expansion.hpp"
 #include "formulas.hpp"
-#include "fp_environment.hpp"
-#include "fp_hygiene.hpp"
+#include "exidel/predicates/internal/fp_environment.hpp"
+#include "exidel/predicates/internal/fp_hygiene.hpp"
+#include "exidel/predicates/staged.hpp"
 #include "small_integers.hpp"
 
 namespace exidel {
@@ -645,6 +648,17 @@ Sign incircle_cosine_staged(Point2 a, Point2 b, Point2 c, Point2 d, AdaptiveStag
 
 Sign compare_distance_staged(Point2 c, Point2 p, Point2 q, AdaptiveStage& stage) {
     return detail::in_standard_environment<compare_distance_impl>(c, p, q, &stage);
+}
+
+Sign staged(Predicate which, std::span<const Point2> p, AdaptiveStage& stage) {
+    switch (which) {
+        case Predicate::orient2d: return orient2d_staged(p[0], p[1], p[2], stage);
+        case Predicate::incircle: return incircle_staged(p[0], p[1], p[2], p[3], stage);
+        case Predicate::incircle_cosine:
+            return incircle_cosine_staged(p[0], p[1], p[2], p[3], stage);
+        case Predicate::compare_distance: return compare_distance_staged(p[0], p[1], p[2], stage);
+    }
+    throw std::invalid_argument("exidel::staged: not a Predicate");
 }
 
 Sign AdaptiveKernel::orient2d(Point2 a, Point2 b, Point2 c) {

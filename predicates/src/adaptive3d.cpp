@@ -10,13 +10,13 @@
 #include "exidel/predicates/adaptive.hpp"
 #include "exidel/predicates/constants.hpp"
 #include "exidel/predicates/exact.hpp"
-#include "adaptive_filter.hpp"
+#include "exidel/predicates/internal/adaptive_filter.hpp"
 #include "adaptive_stages.hpp"
 #include "double_word.hpp"
 #include "expansion.hpp"
 #include "formulas.hpp"
-#include "fp_environment.hpp"
-#include "fp_hygiene.hpp"
+#include "exidel/predicates/internal/fp_environment.hpp"
+#include "exidel/predicates/internal/fp_hygiene.hpp"
 #include "small_integers.hpp"
 
 namespace exidel {

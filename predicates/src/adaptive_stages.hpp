@@ -13,7 +13,8 @@
 #include "binary64.hpp"
 #include "double_word.hpp"
 #include "expansion.hpp"
-#include "fp_hygiene.hpp"
+#include "exidel/predicates/internal/fp_hygiene.hpp"
+#include "exidel/predicates/staged.hpp"
 #include "small_integers.hpp"
 
 namespace exidel::detail {

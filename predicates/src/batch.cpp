@@ -22,11 +22,11 @@
 #define EXIDEL_BATCH_AVX2 0
 #endif
 
-#include "adaptive_unchecked.hpp"
+#include "exidel/predicates/internal/adaptive_unchecked.hpp"
 #include "batch_dispatch.hpp"
 #include "exidel/predicates/constants.hpp"
-#include "fp_environment.hpp"
-#include "fp_hygiene.hpp"
+#include "exidel/predicates/internal/fp_environment.hpp"
+#include "exidel/predicates/internal/fp_hygiene.hpp"
 
 namespace exidel {
 

@@ -15,7 +15,7 @@
 // No geometry here, but every translation unit of the library refuses -ffast-math
 // (tests/hygiene preprocesses each one with it). Before the generated headers, so that the
 // refusal is reported even where they have not been generated yet.
-#include "fp_hygiene.hpp"
+#include "exidel/predicates/internal/fp_hygiene.hpp"
 // Generated in the build tree (predicates/CMakeLists.txt).
 #include "exidel_build_config.hpp"
 #include "exidel_git_commit.hpp"

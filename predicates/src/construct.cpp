@@ -18,7 +18,7 @@
 #include "binary64.hpp"
 #include "double_word.hpp"
 #include "exidel/predicates/constants.hpp"
-#include "fp_hygiene.hpp"
+#include "exidel/predicates/internal/fp_hygiene.hpp"
 
 namespace exidel {
 

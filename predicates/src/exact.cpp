@@ -9,7 +9,7 @@
 
 #include "binary64.hpp"
 #include "formulas.hpp"
-#include "fp_hygiene.hpp"
+#include "exidel/predicates/internal/fp_hygiene.hpp"
 
 namespace exidel {
 

@@ -29,7 +29,7 @@
 
 #include "binary64.hpp"
 #include "exidel/predicates/types.hpp"
-#include "fp_hygiene.hpp"
+#include "exidel/predicates/internal/fp_hygiene.hpp"
 
 namespace exidel::detail {
 

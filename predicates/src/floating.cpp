@@ -4,7 +4,7 @@
 #include <type_traits>
 
 #include "formulas.hpp"
-#include "fp_hygiene.hpp"
+#include "exidel/predicates/internal/fp_hygiene.hpp"
 
 namespace exidel {
 

@@ -11,8 +11,8 @@
 #include <utility>
 
 #include "formulas.hpp"
-#include "fp_environment.hpp"
-#include "fp_hygiene.hpp"
+#include "exidel/predicates/internal/fp_environment.hpp"
+#include "exidel/predicates/internal/fp_hygiene.hpp"
 
 namespace exidel {
 

@@ -7,7 +7,7 @@
 
 // No geometry here, but every translation unit of the library refuses -ffast-math
 // (tests/hygiene builds each one with it).
-#include "fp_hygiene.hpp"
+#include "exidel/predicates/internal/fp_hygiene.hpp"
 
 namespace exidel {
 

@@ -10,7 +10,9 @@
 #include <cstring>
 #include <span>
 #include <string>
+#include <string_view>
 #include <type_traits>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -28,18 +30,15 @@ void evaluate_rows(const K& kernel, const std::array<const Point2*, N>& data,
     for (std::size_t i = 0; i < rows; ++i) {
         std::array<Point2, N> q;
         for (std::size_t k = 0; k < N; ++k) q[k] = data[k][i * stride[k]];
-        Sign s;
-        if constexpr (P == Predicate::orient2d) {
-            s = kernel.orient2d(q[0], q[1], q[2]);
-        } else if constexpr (P == Predicate::incircle) {
-            s = kernel.incircle(q[0], q[1], q[2], q[3]);
-        } else if constexpr (P == Predicate::incircle_cosine) {
-            s = kernel.incircle_cosine(q[0], q[1], q[2], q[3]);
-        } else {
-            s = kernel.compare_distance(q[0], q[1], q[2]);
-        }
+        const Sign s = exidel::evaluate(kernel, P, q);
         out[i] = static_cast<std::int8_t>(to_int(s));
     }
+}
+
+/// The predicates with a batched form in exidel::batch (batch.hpp).
+constexpr bool has_batch(Predicate p) {
+    return p == Predicate::orient2d || p == Predicate::incircle ||
+           p == Predicate::incircle_cosine || p == Predicate::compare_distance;
 }
 
 /// The adaptive kernel on rows without broadcasting: the batched predicates (batch.hpp),
@@ -57,6 +56,7 @@ void evaluate_batch(const std::array<const Point2*, N>& data, std::int8_t* out, 
     } else if constexpr (P == Predicate::incircle_cosine) {
         batch::incircle_cosine(q[0], q[1], q[2], q[3], signs);
     } else {
+        static_assert(P == Predicate::compare_distance, "has_batch and evaluate_batch disagree");
         batch::compare_distance(q[0], q[1], q[2], signs);
     }
     if (rows > 0) std::memcpy(out, signs.data(), rows);
@@ -98,7 +98,7 @@ py::array_t<std::int8_t> vectorised(const std::array<py::object, N>& args,
         for (std::size_t i = 0; i < N; ++i) data[i] = points[i].data;
         const bool broadcasts =
             rows > 1 && std::find(stride.begin(), stride.end(), 0) != stride.end();
-        if constexpr (std::is_same_v<std::decay_t<decltype(k)>, AdaptiveKernel>) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(k)>, AdaptiveKernel> && has_batch(P)) {
             if (!broadcasts) return evaluate_batch<P>(data, out, rows);
         }
         evaluate_rows<P>(k, data, stride, out, rows);
@@ -172,77 +172,50 @@ double loop_seconds(const std::string& predicate, const py::tuple& args,
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+/// py::object, once per point argument.
+template <std::size_t>
+using Object = py::object;
+
+/// One Python function per predicate of a list: its name, its points' names as keyword
+/// arguments, then `kernel`, and its summary followed by the arguments' documentation.
+template <class Which, Which P, std::size_t... I>
+void bind_one(py::module_& m, std::index_sequence<I...>, const char* doc) {
+    constexpr std::size_t n = sizeof...(I);
+    static_assert(n == point_count(P));
+    // The names, from "a,b,c": static, since the lambda and py::arg keep pointers to them.
+    static const std::array<std::string, n> names = [] {
+        std::array<std::string, n> out;
+        std::string_view list = predicate_arguments(P);
+        for (std::string& name : out) {
+            const std::size_t comma = list.find(',');
+            name = std::string(list.substr(0, comma));
+            list = comma == std::string_view::npos ? std::string_view() : list.substr(comma + 1);
+        }
+        return out;
+    }();
+    static const std::array<const char*, n> c_names{names[I].c_str()...};
+    m.def(
+        std::string(predicate_name(P)).c_str(),
+        [](Object<I>... points, const std::string& kernel) {
+            return vectorised<P, n>({points...}, c_names, kernel);
+        },
+        py::arg(c_names[I])..., py::arg("kernel") = "adaptive",
+        (std::string(predicate_summary(P)) + doc).c_str());
+}
+
 }  // namespace
 
 void bind_predicates(py::module_& m) {
-    m.def(
-        "orient2d",
-        [](py::object a, py::object b, py::object c, const std::string& kernel) {
-            return vectorised<Predicate::orient2d, 3>({a, b, c}, {"a", "b", "c"}, kernel);
-        },
-        py::arg("a"), py::arg("b"), py::arg("c"), py::arg("kernel") = "adaptive",
-        (std::string("Sign of the orientation of (a, b, c): +1 counter-clockwise, -1 clockwise,"
-                     " 0 collinear.") +
-         kernel_doc)
-            .c_str());
-    m.def(
-        "incircle",
-        [](py::object a, py::object b, py::object c, py::object d, const std::string& kernel) {
-            return vectorised<Predicate::incircle, 4>({a, b, c, d}, {"a", "b", "c", "d"}, kernel);
-        },
-        py::arg("a"), py::arg("b"), py::arg("c"), py::arg("d"), py::arg("kernel") = "adaptive",
-        (std::string("Shewchuk's in-circle determinant: +1 when d is inside the circle through"
-                     " a, b, c (counter-clockwise), -1 outside, 0 on it; the sign flips for a"
-                     " clockwise abc.") +
-         kernel_doc)
-            .c_str());
-    m.def(
-        "incircle_cosine",
-        [](py::object a, py::object b, py::object c, py::object d, const std::string& kernel) {
-            return vectorised<Predicate::incircle_cosine, 4>({a, b, c, d}, {"a", "b", "c", "d"},
-                                                             kernel);
-        },
-        py::arg("a"), py::arg("b"), py::arg("c"), py::arg("d"), py::arg("kernel") = "adaptive",
-        (std::string("Cai's cosine in-circle test (the paper's Section 5): +1 when d is inside"
-                     " the circle through a, b, c. An in-circle test only when c and d are"
-                     " strictly on opposite sides of line ab (kernel.hpp states the"
-                     " precondition).") +
-         kernel_doc)
-            .c_str());
-    m.def(
-        "compare_distance",
-        [](py::object c, py::object p, py::object q, const std::string& kernel) {
-            return vectorised<Predicate::compare_distance, 3>({c, p, q}, {"c", "p", "q"}, kernel);
-        },
-        py::arg("c"), py::arg("p"), py::arg("q"), py::arg("kernel") = "adaptive",
-        (std::string("Sign of |p - c|^2 - |q - c|^2.") + kernel_doc).c_str());
-    m.def(
-        "orient3d",
-        [](py::object a, py::object b, py::object c, py::object d, const std::string& kernel) {
-            return vectorised<SpacePredicate::orient3d, 4>({a, b, c, d}, {"a", "b", "c", "d"},
-                                                           kernel);
-        },
-        py::arg("a"), py::arg("b"), py::arg("c"), py::arg("d"), py::arg("kernel") = "adaptive",
-        (std::string("Shewchuk's orient3d: the sign of det(a - d, b - d, c - d); +1 when d lies"
-                     " below the plane through a, b, c (a, b, c counter-clockwise seen from"
-                     " above), -1 above, 0 coplanar. The opposite of CGAL's orientation.") +
-         space_doc)
-            .c_str());
-    m.def(
-        "insphere",
-        [](py::object a, py::object b, py::object c, py::object d, py::object e,
-           const std::string& kernel) {
-            return vectorised<SpacePredicate::insphere, 5>({a, b, c, d, e},
-                                                           {"a", "b", "c", "d", "e"}, kernel);
-        },
-        py::arg("a"), py::arg("b"), py::arg("c"), py::arg("d"), py::arg("e"),
-        py::arg("kernel") = "adaptive",
-        (std::string("Shewchuk's insphere: +1 when e is inside the sphere through a, b, c, d"
-                     " with orient3d(a, b, c, d) positive, -1 outside, 0 on it; the sign flips"
-                     " with orient3d(a, b, c, d). The opposite of CGAL's"
-                     " side_of_oriented_sphere.") +
-         space_doc)
-            .c_str());
+    // Every predicate of the lists (exidel/predicates/predicate.hpp), in list order.
+#define EXIDEL_BIND_PREDICATE_(name, points, arguments, summary) \
+    bind_one<Predicate, Predicate::name>(m, std::make_index_sequence<points>(), kernel_doc);
+    EXIDEL_PREDICATES(EXIDEL_BIND_PREDICATE_)
+#undef EXIDEL_BIND_PREDICATE_
+#define EXIDEL_BIND_SPACE_PREDICATE_(name, points, arguments, summary)                    \
+    bind_one<SpacePredicate, SpacePredicate::name>(m, std::make_index_sequence<points>(), \
+                                                   space_doc);
+    EXIDEL_SPACE_PREDICATES(EXIDEL_BIND_SPACE_PREDICATE_)
+#undef EXIDEL_BIND_SPACE_PREDICATE_
     m.def("_loop_seconds", &loop_seconds, py::arg("predicate"), py::arg("args"),
           py::arg("kernel") = "adaptive",
           "For benchmarks: seconds of the bare C++ loop of orient2d or incircle over the rows.");

@@ -66,7 +66,8 @@ TEST(FlipEdge, ReplacesTheDiagonalAndKeepsTwinsAndHull) {
 // Lawson from the sorted fan flips, in total, what the paper's algorithm erodes in the
 // same (lexicographic) order: on a grid exactly, s^3 / 2 to leading order (each column's
 // first point is fanned to the whole previous column), on uniform points within a
-// fraction of a percent. The README's work table explains the cost from this.
+// fraction of a percent. docs/research.md ("The work each algorithm does") explains the cost from
+// this.
 TEST(LawsonWork, FlipsFromTheSortedFanMatchThePapersLexicographicErosion) {
     auto erosions = [](const std::vector<Point2>& pts) {
         Options o = with(Algorithm::external);

@@ -7,12 +7,13 @@
 #include "exidel/delaunay/detail/brio.hpp"
 #include "exidel/predicates/adaptive.hpp"
 #include "exidel/predicates/kernel.hpp"
+#include "exidel/predicates/wrapper.hpp"
 
 namespace exidel::test {
 
 /// A kernel whose every answer is chosen by `mode`: constant signs, or random ones (a
 /// splitmix64 stream, so that the same answer never comes twice in a row by design).
-struct LyingKernel {
+struct LyingKernel : KernelWrapper<LyingKernel> {
     enum Mode { positive, negative, zero, random, random_orient, always_flip };
     Mode mode = positive;
     mutable delaunay::detail::SplitMix64 rng{1};
@@ -28,20 +29,21 @@ struct LyingKernel {
     Sign constant() const {
         return mode == negative ? Sign::negative : mode == zero ? Sign::zero : Sign::positive;
     }
-    Sign orient2d(Point2 a, Point2 b, Point2 c) const {
-        if (mode == always_flip) return AdaptiveKernel{}.orient2d(a, b, c);
-        return mode == random || mode == random_orient ? coin() : constant();
-    }
-    Sign incircle(Point2 a, Point2 b, Point2 c, Point2 d) const {
-        if (mode == always_flip) return Sign::positive;
-        if (mode == random_orient) return AdaptiveKernel{}.incircle(a, b, c, d);
-        return mode == random ? coin() : constant();
-    }
-    Sign incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d) const {
-        return incircle(a, b, c, d);
-    }
-    Sign compare_distance(Point2, Point2, Point2) const {
-        return mode == random ? coin() : constant();
+    /// Every predicate of the list (KernelWrapper): orientations and in-circle tests as
+    /// the mode says; any other predicate a constant or a coin.
+    template <class Points>
+    Sign answer(Predicate which, const Points& p) const {
+        switch (which) {
+            case Predicate::orient2d:
+                if (mode == always_flip) return AdaptiveKernel{}.orient2d(p[0], p[1], p[2]);
+                return mode == random || mode == random_orient ? coin() : constant();
+            case Predicate::incircle:
+            case Predicate::incircle_cosine:
+                if (mode == always_flip) return Sign::positive;
+                if (mode == random_orient) return AdaptiveKernel{}.incircle(p[0], p[1], p[2], p[3]);
+                return mode == random ? coin() : constant();
+            default: return mode == random ? coin() : constant();
+        }
     }
     std::string name() const { return "lying"; }
 };

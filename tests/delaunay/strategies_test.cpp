@@ -416,16 +416,9 @@ TEST(DelaunayRadial, GridWithManyEqualDistances) {
 
 /// The adaptive kernel with its distance comparison reversed: the radial order then
 /// inserts the farthest points first, and a later point lands inside the hull.
-struct ReversedDistanceKernel {
+struct ReversedDistanceKernel : AdaptiveKernel {
     static constexpr bool is_exact = false;
     static std::string name() { return "reversed-distance"; }
-    Sign orient2d(Point2 a, Point2 b, Point2 c) const { return AdaptiveKernel::orient2d(a, b, c); }
-    Sign incircle(Point2 a, Point2 b, Point2 c, Point2 d) const {
-        return AdaptiveKernel::incircle(a, b, c, d);
-    }
-    Sign incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d) const {
-        return AdaptiveKernel::incircle_cosine(a, b, c, d);
-    }
     Sign compare_distance(Point2 c, Point2 p, Point2 q) const {
         return AdaptiveKernel::compare_distance(c, q, p);
     }

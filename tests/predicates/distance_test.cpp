@@ -9,6 +9,7 @@
 #include <rapidcheck.h>
 
 #include "distance_queries.hpp"
+#include "exidel/predicates/staged.hpp"
 #include "exidel/testing/all.hpp"
 #include "kernels_under_test.hpp"
 

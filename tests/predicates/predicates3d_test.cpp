@@ -16,6 +16,7 @@
 
 #include "cgal_oracle.hpp"
 #include "double_word.hpp"
+#include "exidel/predicates/staged.hpp"
 #include "exidel/testing/all.hpp"
 #include "kernels_under_test.hpp"
 

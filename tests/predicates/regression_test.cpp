@@ -27,29 +27,29 @@ template <class K>
 class Regression : public ::testing::Test {
 protected:
     static void orient(Point2 a, Point2 b, Point2 c, std::optional<Sign> by_hand) {
-        const Sign got = K::orient2d(a, b, c);
+        const Sign got = K{}.orient2d(a, b, c);
         EXPECT_EQ(got, cgal_orient2d(a, b, c));
         if (by_hand) {
             EXPECT_EQ(got, *by_hand);
         }
     }
     static void incircle(Point2 a, Point2 b, Point2 c, Point2 d, std::optional<Sign> by_hand) {
-        const Sign got = K::incircle(a, b, c, d);
+        const Sign got = K{}.incircle(a, b, c, d);
         EXPECT_EQ(got, cgal_incircle(a, b, c, d));
         if (by_hand) {
             EXPECT_EQ(got, *by_hand);
         }
     }
     static void distance(Point2 c, Point2 p, Point2 q, std::optional<Sign> by_hand) {
-        const Sign got = K::compare_distance(c, p, q);
+        const Sign got = K{}.compare_distance(c, p, q);
         EXPECT_EQ(got, cgal_compare_distance(c, p, q));
-        EXPECT_EQ(K::compare_distance(c, q, p), -got);
+        EXPECT_EQ(K{}.compare_distance(c, q, p), -got);
         if (by_hand) {
             EXPECT_EQ(got, *by_hand);
         }
     }
     static void cosine(Point2 a, Point2 b, Point2 c, Point2 d, std::optional<Sign> by_hand) {
-        const Sign got = K::incircle_cosine(a, b, c, d);
+        const Sign got = K{}.incircle_cosine(a, b, c, d);
         EXPECT_EQ(got, independent_cosine_sign(a, b, c, d));
         if (cgal_cosine_precondition(a, b, c, d)) {
             EXPECT_EQ(got, cgal_orient2d(a, b, c) * cgal_incircle(a, b, c, d));

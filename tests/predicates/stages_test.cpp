@@ -19,6 +19,7 @@
 #include "small_integers.hpp"
 #include "exidel/predicates/adaptive.hpp"
 #include "exidel/predicates/constants.hpp"
+#include "exidel/predicates/staged.hpp"
 #include "exidel/testing/all.hpp"
 
 namespace exidel::test {

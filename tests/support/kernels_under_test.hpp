@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "exidel/predicates/all.hpp"
+#include "exidel/predicates/wrapper.hpp"
 #include "exidel/testing/ulp.hpp"
 
 namespace exidel::test {
@@ -19,36 +20,16 @@ namespace exidel::test {
 /// Computing b per query, rather than one fixed worst case (8 * (53 + 2097) + 13 =
 /// 17213 bits covers every pair of finite doubles), tests the bound itself at its
 /// tightest: one bit fewer than claimed and a counterexample can exist.
-struct MpfrAtBound {
+/// Every predicate of both lists goes through answer() (wrapper.hpp), with the bit count
+/// of testing::exact_bits (compare_distance has degree 2 like orient2d: 2b+3 bits; the
+/// predicates of space 3b+6 and 5b+12).
+struct MpfrAtBound : KernelWrapper<MpfrAtBound, true> {
     static constexpr bool is_exact = true;  // the claim under test
     static std::string name() { return "mpfr-at-bound"; }
-    static Sign orient2d(Point2 a, Point2 b, Point2 c) {
-        const std::array q{a, b, c};
-        return MpfrKernel(testing::orient2d_bits(testing::grid_bits(q))).orient2d(a, b, c);
-    }
-    static Sign incircle(Point2 a, Point2 b, Point2 c, Point2 d) {
-        const std::array q{a, b, c, d};
-        return MpfrKernel(testing::incircle_bits(testing::grid_bits(q))).incircle(a, b, c, d);
-    }
-    static Sign incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d) {
-        const std::array q{a, b, c, d};
-        return MpfrKernel(testing::incircle_cosine_bits(testing::grid_bits(q)))
-            .incircle_cosine(a, b, c, d);
-    }
-    // Degree 2 like orient2d: 2b+3 bits (proofs/bitcounts.md).
-    static Sign compare_distance(Point2 c, Point2 p, Point2 q) {
-        const std::array pts{c, p, q};
-        return MpfrKernel(testing::orient2d_bits(testing::grid_bits(pts)))
-            .compare_distance(c, p, q);
-    }
-    // The predicates of space: 3b+6 and 5b+12 bits (proofs/bitcounts.md).
-    static Sign orient3d(Point3 a, Point3 b, Point3 c, Point3 d) {
-        const std::array q{a, b, c, d};
-        return MpfrKernel(testing::orient3d_bits(testing::grid_bits(q))).orient3d(a, b, c, d);
-    }
-    static Sign insphere(Point3 a, Point3 b, Point3 c, Point3 d, Point3 e) {
-        const std::array q{a, b, c, d, e};
-        return MpfrKernel(testing::insphere_bits(testing::grid_bits(q))).insphere(a, b, c, d, e);
+    template <class Which, class Points>
+    Sign answer(Which which, const Points& points) const {
+        return evaluate(MpfrKernel(testing::exact_bits(which, testing::grid_bits(points))), which,
+                        points);
     }
 };
 static_assert(PredicateKernel3D<MpfrAtBound>);

@@ -2,12 +2,13 @@
 // library's own compilation of triangulate<..., AdaptiveKernel> (instantiate.cpp).
 //
 // Same answers as AdaptiveKernel, call for call: orient2d and incircle first run the
-// kernel's own stage-A filters (predicates/src/adaptive_filter.hpp, the very functions
-// adaptive.cpp runs), and whatever a filter leaves undecided goes to the kernel's later
+// kernel's own stage-A filters (exidel/predicates/internal/adaptive_filter.hpp, the very
+// functions adaptive.cpp runs), and whatever a filter leaves undecided goes to the later
 // stages (adaptive_unchecked.hpp), which decide it exactly. Two things change, both
-// measured (docs/profile.md): the filter's instructions are in the triangulation's loop
-// rather than behind a call, and the floating-point environment is checked once per run
-// instead of once per call (reading MXCSR was half of every in-circle test's time).
+// measured (docs/measurements.md, "The adaptive kernel inside the triangulation"): the filter's
+// instructions are in the triangulation's loop rather than behind a call, and the floating-point
+// environment is checked once per run instead of once per call (reading MXCSR was half of every
+// in-circle test's time).
 //
 // Precondition: the run is in the standard floating-point environment (round to nearest,
 // no flush-to-zero or denormals-are-zero). detail::triangulate_adaptive
@@ -23,15 +24,14 @@
 
 #include "exidel/predicates/adaptive.hpp"
 #include "exidel/predicates/kernel.hpp"
-#include "adaptive_filter.hpp"
-#include "adaptive_unchecked.hpp"
+#include "exidel/predicates/internal/adaptive_filter.hpp"
+#include "exidel/predicates/internal/adaptive_unchecked.hpp"
 
 namespace exidel::delaunay::detail {
 
-struct InlineAdaptiveKernel {
-    static constexpr bool is_exact = AdaptiveKernel::is_exact;
-    static std::string name() { return AdaptiveKernel::name(); }
-
+/// Derives from AdaptiveKernel: a predicate it does not declare (a new one of the list,
+/// the predicates of space) is the adaptive kernel's own, with its environment check.
+struct InlineAdaptiveKernel : AdaptiveKernel {
     [[gnu::always_inline]] static Sign orient2d(Point2 a, Point2 b, Point2 c) {
         Sign s;
         double detsum;

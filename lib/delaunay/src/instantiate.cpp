@@ -1,25 +1,18 @@
-// exidel: the triangulation and the sorted hull compiled once for every kernel of the
-// registry (exidel/predicates/registry.hpp), in the library's own translation unit
-// (compiled with -ffp-contract=off), uninstrumented and with counters.
-#include "exidel/delaunay/hull.hpp"
-#include "exidel/delaunay/triangulate.hpp"
-#include "fp_environment.hpp"
-#include "inline_adaptive.hpp"
-
-namespace exidel::delaunay {
-
-#define EXIDEL_DELAUNAY_INSTANTIATE(K, spelling, summary)                                        \
-    template Result triangulate<Instrumentation::off, K>(std::span<const Point2>, const K&,      \
-                                                         const Options&);                        \
-    template Result triangulate<Instrumentation::counters, K>(std::span<const Point2>, const K&, \
-                                                              const Options&);                   \
-    template SortedHull sorted_convex_hull<K>(std::span<const Point2>, const K&);
-EXIDEL_KERNELS(EXIDEL_DELAUNAY_INSTANTIATE)
-#undef EXIDEL_DELAUNAY_INSTANTIATE
-
+// exidel: how the adaptive kernel's triangulation enters InlineAdaptiveKernel. The
+// explicit instantiations of every kernel's triangulation are generated from the registry
+// (src/instantiate.hpp); those of AdaptiveKernel call detail::triangulate_adaptive, here.
+//
 // The adaptive kernel's triangulation runs InlineAdaptiveKernel: the same exact answers,
 // the filters inline and the floating-point environment made standard once for the whole
 // run (inline_adaptive.hpp).
+#include "exidel/predicates/internal/fp_environment.hpp"
+#include "instantiate.hpp"
+
+// The algorithm bodies over InlineAdaptiveKernel: in instantiate/AdaptiveKernel_*.cpp.
+EXIDEL_DELAUNAY_EXTERN_ALGORITHMS(exidel::AdaptiveKernel)
+
+namespace exidel::delaunay {
+
 namespace {
 
 // Never inlined, so that the compiler cannot move the run's floating-point work across

@@ -6,35 +6,15 @@
 #include <map>
 
 #include "exidel/delaunay/triangulate.hpp"
+#include "exidel/predicates/dynamic.hpp"
 #include "exidel/research/studies.hpp"
 
 namespace exidel::research {
 
-Sign StageCountingKernel::orient2d(Point2 a, Point2 b, Point2 c) const {
+Sign StageCountingKernel::count(Predicate which, std::span<const Point2> points) const {
     AdaptiveStage stage{};
-    const Sign s = orient2d_staged(a, b, c, stage);
-    ++counts[0][std::size_t(stage)];
-    return s;
-}
-
-Sign StageCountingKernel::incircle(Point2 a, Point2 b, Point2 c, Point2 d) const {
-    AdaptiveStage stage{};
-    const Sign s = incircle_staged(a, b, c, d, stage);
-    ++counts[1][std::size_t(stage)];
-    return s;
-}
-
-Sign StageCountingKernel::incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d) const {
-    AdaptiveStage stage{};
-    const Sign s = incircle_cosine_staged(a, b, c, d, stage);
-    ++counts[2][std::size_t(stage)];
-    return s;
-}
-
-Sign StageCountingKernel::compare_distance(Point2 c, Point2 p, Point2 q) const {
-    AdaptiveStage stage{};
-    const Sign s = compare_distance_staged(c, p, q, stage);
-    ++counts[compare_distance_row][std::size_t(stage)];
+    const Sign s = staged(which, points, stage);
+    ++counts[std::size_t(which)][std::size_t(stage)];
     return s;
 }
 
@@ -217,7 +197,8 @@ StagesStudy run_stages_study(const StagesOptions& options, const RunOptions& run
             }
             for (std::size_t t = 0; t < std::size(triangulation_contexts); ++t) {
                 const StageCountingKernel counting;
-                (void)delaunay::triangulate(points, counting,
+                // Through DynamicKernel: the library's compiled algorithms, none here.
+                (void)delaunay::triangulate(points, DynamicKernel(counting),
                                             study_options(triangulation_contexts[t].policy,
                                                           triangulation_contexts[t].order));
                 c.counts[t] = counting.counts;

@@ -16,6 +16,8 @@
 
 #include "exidel/delaunay/certify.hpp"
 #include "exidel/delaunay/triangulate.hpp"
+#include "exidel/predicates/dynamic.hpp"
+#include "exidel/predicates/wrapper.hpp"
 #include "exidel/io/points.hpp"
 #include "exidel/research/graphics.hpp"
 #include "exidel/research/studies.hpp"
@@ -33,31 +35,19 @@ struct GuardExceeded {};
 /// has its own guards and never loops; this one makes "never a hang" independent of
 /// that claim.
 template <PredicateKernel K>
-struct GuardedKernel {
+struct GuardedKernel : KernelWrapper<GuardedKernel<K>> {
     static constexpr bool is_exact = K::is_exact;
     K kernel;
     std::uint64_t budget;
     mutable std::uint64_t calls = 0;  // mutable: the kernel interface is const
 
+    GuardedKernel(const K& k, std::uint64_t b) : kernel(k), budget(b) {}
     std::string name() const { return kernel.name(); }
-    void spend() const {
+    /// Every predicate of the list (KernelWrapper): one call of the budget, then K's.
+    template <class Points>
+    Sign answer(Predicate which, const Points& points) const {
         if (++calls > budget) throw GuardExceeded{};
-    }
-    Sign orient2d(Point2 a, Point2 b, Point2 c) const {
-        spend();
-        return kernel.orient2d(a, b, c);
-    }
-    Sign incircle(Point2 a, Point2 b, Point2 c, Point2 d) const {
-        spend();
-        return kernel.incircle(a, b, c, d);
-    }
-    Sign incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d) const {
-        spend();
-        return kernel.incircle_cosine(a, b, c, d);
-    }
-    Sign compare_distance(Point2 c, Point2 p, Point2 q) const {
-        spend();
-        return kernel.compare_distance(c, p, q);
+        return evaluate(kernel, which, points);
     }
 };
 static_assert(PredicateKernel<GuardedKernel<DoubleKernel>>);
@@ -237,7 +227,9 @@ Classification classify_triangulation(std::span<const Point2> points, const Kern
         result = std::visit(
             [&](const auto& k) {
                 const GuardedKernel<std::decay_t<decltype(k)>> guarded{k, budget};
-                return delaunay::triangulate(points, guarded, options);
+                // Through DynamicKernel: the library's compiled algorithms serve every
+                // kernel, and this file compiles none (an indirect call per predicate).
+                return delaunay::triangulate(points, DynamicKernel(guarded), options);
             },
             kernel);
     } catch (const GuardExceeded&) {

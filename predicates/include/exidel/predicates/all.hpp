@@ -4,6 +4,7 @@
 #include "exidel/predicates/adaptive.hpp"
 #include "exidel/predicates/batch.hpp"
 #include "exidel/predicates/construct.hpp"
+#include "exidel/predicates/dynamic.hpp"
 #include "exidel/predicates/exact.hpp"
 #include "exidel/predicates/floating.hpp"
 #include "exidel/predicates/kernel.hpp"
@@ -11,3 +12,4 @@
 #include "exidel/predicates/predicate.hpp"
 #include "exidel/predicates/registry.hpp"
 #include "exidel/predicates/types.hpp"
+#include "exidel/predicates/wrapper.hpp"

@@ -1,10 +1,25 @@
 // exidel: the one list of predicates every kernel provides, and the list of the predicates
 // of space (PredicateKernel3D).
 //
-// Each line of EXIDEL_PREDICATES is X(name, points): the PredicateKernel member of that
-// name, and how many points it takes. Everything that names, parses, counts or dispatches
-// predicates (the `exidel predicate` query format, the research studies, the agreement
-// table) derives from this list, so a new predicate is one line here plus its kernels.
+// Each line of EXIDEL_PREDICATES is X(name, points, "arguments", "summary"): the
+// PredicateKernel member of that name, how many points it takes (3, 4 or 5), the names of
+// its arguments as Python and the documentation spell them, and one sentence on its sign.
+// Everything that names, parses, counts, forwards or dispatches predicates derives from
+// this list: the Predicate enum, evaluate(), KernelWrapper (wrapper.hpp), DynamicKernel
+// (dynamic.hpp), the `exidel predicate` query format, the research studies and the
+// Python functions. A new predicate (docs/architecture.md, "Adding a predicate") is:
+//   1. one line here (in EXIDEL_SPACE_PREDICATES if its points are Point3);
+//   2. its requirement and meaning in kernel.hpp (PredicateKernel, or PredicateKernel3D);
+//   3. its member in every shipped kernel: floating.hpp/.cpp and formulas.hpp (double,
+//      long double and MPFR evaluate the same formula), exact.hpp/.cpp, mpfr.hpp/.cpp,
+//      adaptive.hpp and adaptive.cpp or adaptive3d.cpp (the filter and stages);
+//   4. its proofs: every error bound and bit count of those stages in proofs/, the
+//      constants in constants.hpp (proofs/checker compares them), and exact_bits in
+//      exidel/testing/ulp.hpp;
+//   5. its tests: generators of its degenerate inputs, a property against CGAL, and
+//      its CGAL column in bench/agreement.cpp.
+// Derived without an edit: evaluate(), every KernelWrapper and DynamicKernel, the Python
+// function, the query format of `exidel predicate`.
 #pragma once
 
 #include <array>
@@ -17,23 +32,48 @@
 #include "exidel/predicates/types.hpp"
 
 // clang-format off
-#define EXIDEL_PREDICATES(X) \
-    X(orient2d, 3)           \
-    X(incircle, 4)           \
-    X(incircle_cosine, 4)    \
-    X(compare_distance, 3)
+#define EXIDEL_PREDICATES(X)                                                                   \
+    X(orient2d, 3, "a,b,c",                                                                    \
+      "Sign of the orientation of (a, b, c): +1 counter-clockwise, -1 clockwise, 0 collinear.") \
+    X(incircle, 4, "a,b,c,d",                                                                  \
+      "Shewchuk's in-circle determinant: +1 when d is inside the circle through a, b, c "      \
+      "(counter-clockwise), -1 outside, 0 on it; the sign flips for a clockwise abc.")         \
+    X(incircle_cosine, 4, "a,b,c,d",                                                           \
+      "Cai's cosine in-circle test (the paper's Section 5): +1 when d is inside the circle "   \
+      "through a, b, c. An in-circle test only when c and d are strictly on opposite sides "   \
+      "of line ab (kernel.hpp states the precondition).")                                     \
+    X(compare_distance, 3, "c,p,q", "Sign of |p - c|^2 - |q - c|^2.")
 
 // The predicates of space (PredicateKernel3D), in a list of their own: their points are
 // Point3, and a kernel may lack them (has_3d_predicates).
-#define EXIDEL_SPACE_PREDICATES(X) \
-    X(orient3d, 4)                 \
-    X(insphere, 5)
+#define EXIDEL_SPACE_PREDICATES(X)                                                             \
+    X(orient3d, 4, "a,b,c,d",                                                                  \
+      "Shewchuk's orient3d: the sign of det(a - d, b - d, c - d); +1 when d lies below the "   \
+      "plane through a, b, c (a, b, c counter-clockwise seen from above), -1 above, 0 "        \
+      "coplanar. The opposite of CGAL's orientation.")                                        \
+    X(insphere, 5, "a,b,c,d,e",                                                                \
+      "Shewchuk's insphere: +1 when e is inside the sphere through a, b, c, d with "           \
+      "orient3d(a, b, c, d) positive, -1 outside, 0 on it; the sign flips with "              \
+      "orient3d(a, b, c, d). The opposite of CGAL's side_of_oriented_sphere.")
+
+// EXIDEL_PREDICATE_PARAMETERS_<points>(T) declares the parameters p0, p1, ... of type T;
+// EXIDEL_PREDICATE_ARGUMENTS_<points>(a) passes a[0], a[1], ...: for code that writes one
+// member or call per entry of the lists (a predicate of 6 points adds its two lines here).
+#define EXIDEL_PREDICATE_PARAMETERS_3(T) T p0, T p1, T p2
+#define EXIDEL_PREDICATE_PARAMETERS_4(T) EXIDEL_PREDICATE_PARAMETERS_3(T), T p3
+#define EXIDEL_PREDICATE_PARAMETERS_5(T) EXIDEL_PREDICATE_PARAMETERS_4(T), T p4
+#define EXIDEL_PREDICATE_ARGUMENTS_3(a) a[0], a[1], a[2]
+#define EXIDEL_PREDICATE_ARGUMENTS_4(a) EXIDEL_PREDICATE_ARGUMENTS_3(a), a[3]
+#define EXIDEL_PREDICATE_ARGUMENTS_5(a) EXIDEL_PREDICATE_ARGUMENTS_4(a), a[4]
+#define EXIDEL_PREDICATE_NAMES_3 p0, p1, p2
+#define EXIDEL_PREDICATE_NAMES_4 EXIDEL_PREDICATE_NAMES_3, p3
+#define EXIDEL_PREDICATE_NAMES_5 EXIDEL_PREDICATE_NAMES_4, p4
 // clang-format on
 
 namespace exidel {
 
 enum class Predicate {
-#define EXIDEL_PREDICATE_ENUMERATOR(name, points) name,
+#define EXIDEL_PREDICATE_ENUMERATOR(name, points, arguments, summary) name,
     EXIDEL_PREDICATES(EXIDEL_PREDICATE_ENUMERATOR)
 };
 
@@ -42,10 +82,10 @@ enum class SpacePredicate { EXIDEL_SPACE_PREDICATES(EXIDEL_PREDICATE_ENUMERATOR)
 
 /// Every predicate, in the order of the list.
 inline constexpr std::array all_predicates{
-#define EXIDEL_PREDICATE_VALUE(name, points) Predicate::name,
+#define EXIDEL_PREDICATE_VALUE(name, points, arguments, summary) Predicate::name,
     EXIDEL_PREDICATES(EXIDEL_PREDICATE_VALUE)};
 inline constexpr std::array all_space_predicates{
-#define EXIDEL_SPACE_PREDICATE_VALUE(name, points) SpacePredicate::name,
+#define EXIDEL_SPACE_PREDICATE_VALUE(name, points, arguments, summary) SpacePredicate::name,
     EXIDEL_SPACE_PREDICATES(EXIDEL_SPACE_PREDICATE_VALUE)
 #undef EXIDEL_SPACE_PREDICATE_VALUE
 #undef EXIDEL_PREDICATE_VALUE
@@ -56,8 +96,11 @@ namespace detail {
 struct PredicateFacts {
     std::string_view name;
     std::size_t points;
+    std::string_view arguments;  ///< "a,b,c": the names of the points, comma-separated
+    std::string_view summary;
 };
-#define EXIDEL_PREDICATE_FACTS(name, points) PredicateFacts{#name, points},
+#define EXIDEL_PREDICATE_FACTS(name, points, arguments, summary) \
+    PredicateFacts{#name, points, arguments, summary},
 inline constexpr PredicateFacts predicate_facts[] = {EXIDEL_PREDICATES(EXIDEL_PREDICATE_FACTS)};
 inline constexpr PredicateFacts space_predicate_facts[] = {
     EXIDEL_SPACE_PREDICATES(EXIDEL_PREDICATE_FACTS)};
@@ -99,16 +142,29 @@ constexpr std::optional<SpacePredicate> space_predicate_from_name(std::string_vi
     return detail::from_name(all_space_predicates, name);
 }
 
+/// The names of the predicate's points, comma-separated ("a,b,c"; "c,p,q" for
+/// compare_distance), and one sentence on its sign: for help texts and the Python module.
+constexpr std::string_view predicate_arguments(Predicate p) noexcept {
+    return detail::facts(p).arguments;
+}
+constexpr std::string_view predicate_arguments(SpacePredicate p) noexcept {
+    return detail::facts(p).arguments;
+}
+constexpr std::string_view predicate_summary(Predicate p) noexcept {
+    return detail::facts(p).summary;
+}
+constexpr std::string_view predicate_summary(SpacePredicate p) noexcept {
+    return detail::facts(p).summary;
+}
+
 /// Evaluates predicate p of kernel k on its point_count(p) first points, in argument order
 /// (compare_distance(c, p, q) takes c first).
 template <PredicateKernel K>
 Sign evaluate(const K& k, Predicate p, std::span<const Point2> args) {
     switch (p) {
-        case Predicate::orient2d: return k.orient2d(args[0], args[1], args[2]);
-        case Predicate::incircle: return k.incircle(args[0], args[1], args[2], args[3]);
-        case Predicate::incircle_cosine:
-            return k.incircle_cosine(args[0], args[1], args[2], args[3]);
-        case Predicate::compare_distance: return k.compare_distance(args[0], args[1], args[2]);
+#define EXIDEL_EVALUATE_CASE_(name, points, arguments, summary) \
+    case Predicate::name: return k.name(EXIDEL_PREDICATE_ARGUMENTS_##points(args));
+        EXIDEL_PREDICATES(EXIDEL_EVALUATE_CASE_)
     }
     return Sign::zero;  // unreachable: every enumerator is handled above
 }
@@ -117,9 +173,11 @@ Sign evaluate(const K& k, Predicate p, std::span<const Point2> args) {
 template <PredicateKernel3D K>
 Sign evaluate(const K& k, SpacePredicate p, std::span<const Point3> args) {
     switch (p) {
-        case SpacePredicate::orient3d: return k.orient3d(args[0], args[1], args[2], args[3]);
-        case SpacePredicate::insphere:
-            return k.insphere(args[0], args[1], args[2], args[3], args[4]);
+#define EXIDEL_EVALUATE_CASE_SPACE_(name, points, arguments, summary) \
+    case SpacePredicate::name: return k.name(EXIDEL_PREDICATE_ARGUMENTS_##points(args));
+        EXIDEL_SPACE_PREDICATES(EXIDEL_EVALUATE_CASE_SPACE_)
+#undef EXIDEL_EVALUATE_CASE_SPACE_
+#undef EXIDEL_EVALUATE_CASE_
     }
     return Sign::zero;  // unreachable: every enumerator is handled above
 }

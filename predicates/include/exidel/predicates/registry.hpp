@@ -5,8 +5,18 @@
 //   - AnyKernel, a std::variant of every kernel (the CLI, the research studies, Python);
 //   - parse_kernel / kernel_spellings / kernel_help, the names on every command line;
 //   - the explicit instantiations of the algorithms in lib/ (compiled once, in the
-//     library's own translation units with its floating-point flags, never in a user's).
-// A new kernel is one header satisfying PredicateKernel and one line here.
+//     library's own translation units with its floating-point flags, never in a user's;
+//     lib/delaunay/CMakeLists.txt generates them from this list).
+// A new kernel (docs/architecture.md, "Adding a kernel"):
+//   1. a header and source in predicates/ with a type satisfying PredicateKernel (and
+//      PredicateKernel3D if it decides orient3d and insphere: kernel.hpp), every member
+//      a predicate of the lists in predicate.hpp;
+//   2. one line here;
+//   3. if it claims exactness, its name in ExactKernels (tests/support/
+//      kernels_under_test.hpp; a static_assert there fails until it is);
+//   4. if its predicates are slow (big numbers), one line in
+//      EXIDEL_DELAUNAY_DYNAMIC_KERNELS (lib/delaunay/.../triangulate.hpp), so that the
+//      triangulation is not compiled once more for it.
 //
 // A spelling is what K::name() returns; a kernel with a parameter writes it in angle
 // brackets ("mpfr:<bits>") and provides a make_kernel overload below that parses it.

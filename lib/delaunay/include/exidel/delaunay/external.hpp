@@ -28,8 +28,8 @@ inline constexpr std::size_t tiles_from = std::size_t{1} << 24;
 /// Plain strips of 2^14 points get thin as n grows (at 10^8, 6104 of them, about 1.6
 /// points across), their triangulations are mostly slivers that the merges delete, and
 /// the time per point rose by 1.6x from 10^7 to 10^8; square tiles keep every piece's
-/// shape, and the merges cost about the square root of their pieces (README,
-/// "Triangulation", issue 17's fourth session, for the measurements).
+/// shape, and the merges cost about the square root of their pieces (docs/measurements.md,
+/// "Tiles", and docs/benchmarks.md, "Scale", for the measurements).
 constexpr std::size_t default_strip_tiles(std::size_t n, std::size_t strip_points) noexcept {
     if (n < tiles_from || strip_points == 0) return 1;
     const std::size_t ratio = n / strip_points;

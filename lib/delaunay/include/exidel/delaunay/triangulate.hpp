@@ -24,12 +24,24 @@
 #include "exidel/delaunay/detail/sweep_hull.hpp"
 #include "exidel/delaunay/external.hpp"
 #include "exidel/delaunay/result.hpp"
+#include "exidel/predicates/dynamic.hpp"
 #include "exidel/predicates/kernel.hpp"
 #include "exidel/predicates/registry.hpp"
 
 namespace exidel::delaunay {
 
 namespace detail {
+
+/// One algorithm over one kernel, instrumentation and in-circle policy. Not inline: the
+/// library compiles it for each of its kernels and algorithms in a translation unit of its
+/// own (src/instantiate_algorithm.hpp; lib/delaunay/CMakeLists.txt generates them from the
+/// two lists), so that its build spreads over every core; a user's own kernel instantiates
+/// it here.
+template <class Type, PredicateKernel K, Instrumentation I, InCirclePolicy P>
+void run_one(const K& kernel, SortedInput& in, const Options& options, MeshOutput& out,
+             Result& result) {
+    Type::template run<K, I, P>(kernel, in, options, out, result);
+}
 
 /// Runs the algorithm `options` names on the sorted points and turns its mesh into the
 /// result's arrays. Every algorithm is called for every input (fewer than three points
@@ -42,7 +54,7 @@ Result run_algorithm(const K& kernel, SortedInput& in, const Options& options) {
     MeshOutput out;
     switch (options.algorithm) {
 #define EXIDEL_RUN_ALGORITHM_(name, spelling, Type, takes_order, summary) \
-    case Algorithm::name: Type::template run<K, I, P>(kernel, in, options, out, result); break;
+    case Algorithm::name: run_one<Type, K, I, P>(kernel, in, options, out, result); break;
         EXIDEL_DELAUNAY_ALGORITHMS(EXIDEL_RUN_ALGORITHM_)
 #undef EXIDEL_RUN_ALGORITHM_
         default:
@@ -115,26 +127,60 @@ Result triangulate_with(std::span<const Point2> points, const K& kernel, const O
 template <Instrumentation I>
 Result triangulate_adaptive(std::span<const Point2> points, const Options& options);
 
+// The kernels of the registry whose triangulation runs through DynamicKernel
+// (exidel/predicates/dynamic.hpp): their predicates cost far more than the indirect call
+// (exact integers, MPFR) or they are baselines for research (x87 long double), and the
+// algorithms are then compiled once for all of them instead of once each
+// (lib/delaunay/CMakeLists.txt reads this list). The answers are the kernel's, call for
+// call, so the result is the same.
+// clang-format off
+#define EXIDEL_DELAUNAY_DYNAMIC_KERNELS(X) \
+    X(LongDoubleKernel)                    \
+    X(GmpExactKernel)                      \
+    X(CppIntExactKernel)                   \
+    X(MpfrKernel)
+// clang-format on
+
+template <class K>
+inline constexpr bool listed_dynamic = false;
+#define EXIDEL_DELAUNAY_LISTED_DYNAMIC_(K) \
+    template <>                            \
+    inline constexpr bool listed_dynamic<K> = true;
+EXIDEL_DELAUNAY_DYNAMIC_KERNELS(EXIDEL_DELAUNAY_LISTED_DYNAMIC_)
+#undef EXIDEL_DELAUNAY_LISTED_DYNAMIC_
+
+/// Whether triangulate<I>(points, K) runs through DynamicKernel: with the kernels of the
+/// list, and, when counting (Instrumentation::counters, a run for its counts), with every
+/// kernel but the adaptive one, whose counted runs `--stats` times. Never for theorem1,
+/// which the tests that use it compile for their own kernels.
+template <class K, Instrumentation I>
+inline constexpr bool runs_dynamic =
+    I != Instrumentation::theorem1 && !std::is_same_v<K, DynamicKernel> &&
+    (listed_dynamic<K> || (I == Instrumentation::counters && !std::is_same_v<K, AdaptiveKernel>));
+
 }  // namespace detail
 
 template <Instrumentation I, PredicateKernel K>
 Result triangulate(std::span<const Point2> points, const K& kernel, const Options& options) {
     if constexpr (std::is_same_v<K, AdaptiveKernel> && I != Instrumentation::theorem1) {
         return detail::triangulate_adaptive<I>(points, options);
+    } else if constexpr (detail::runs_dynamic<K, I>) {
+        return triangulate<I>(points, DynamicKernel(kernel), options);
     } else {
         return detail::triangulate_with<I>(points, kernel, options);
     }
 }
 
 // Compiled once in the library for every kernel of the registry
-// (exidel/predicates/registry.hpp), uninstrumented and with counters. Instrumentation::
-// theorem1 is not: the tests that use it instantiate it.
+// (exidel/predicates/registry.hpp) and DynamicKernel, uninstrumented and with counters.
+// Instrumentation:: theorem1 is not: the tests that use it instantiate it.
 #define EXIDEL_DELAUNAY_EXTERN(K, spelling, summary)                                               \
     extern template Result triangulate<Instrumentation::off, K>(std::span<const Point2>, const K&, \
                                                                 const Options&);                   \
     extern template Result triangulate<Instrumentation::counters, K>(std::span<const Point2>,      \
                                                                      const K&, const Options&);
 EXIDEL_KERNELS(EXIDEL_DELAUNAY_EXTERN)
+EXIDEL_DELAUNAY_EXTERN(DynamicKernel, "", "")
 #undef EXIDEL_DELAUNAY_EXTERN
 
 }  // namespace exidel::delaunay

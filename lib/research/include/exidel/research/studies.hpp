@@ -24,6 +24,8 @@
 
 #include "exidel/delaunay/algorithms.hpp"
 #include "exidel/delaunay/result.hpp"
+#include "exidel/predicates/staged.hpp"
+#include "exidel/predicates/wrapper.hpp"
 #include "exidel/research/common.hpp"
 #include "exidel/research/graphics.hpp"
 #include "exidel/testing/families.hpp"
@@ -333,13 +335,15 @@ using StageCounts =
 
 /// The adaptive kernel, counting which stage decided each call: a PredicateKernel, so
 /// the triangulation template runs with it unchanged.
-struct StageCountingKernel {
+struct StageCountingKernel : KernelWrapper<StageCountingKernel> {
     static constexpr bool is_exact = true;
     static std::string name() { return "adaptive-counting"; }
-    Sign orient2d(Point2 a, Point2 b, Point2 c) const;
-    Sign incircle(Point2 a, Point2 b, Point2 c, Point2 d) const;
-    Sign incircle_cosine(Point2 a, Point2 b, Point2 c, Point2 d) const;
-    Sign compare_distance(Point2 c, Point2 p, Point2 q) const;
+    /// Every predicate of the list (KernelWrapper): exidel::staged, counted in its row.
+    template <class Points>
+    Sign answer(Predicate which, const Points& points) const {
+        return count(which, points);
+    }
+    Sign count(Predicate which, std::span<const Point2> points) const;
     mutable StageCounts counts{};  // mutable: the kernel interface is const
 };
 static_assert(PredicateKernel<StageCountingKernel>);

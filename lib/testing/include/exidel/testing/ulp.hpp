@@ -88,5 +88,12 @@ constexpr unsigned exact_bits(Predicate p, int b) {
     }
     return 0;
 }
+constexpr unsigned exact_bits(SpacePredicate p, int b) {
+    switch (p) {
+        case SpacePredicate::orient3d: return orient3d_bits(b);
+        case SpacePredicate::insphere: return insphere_bits(b);
+    }
+    return 0;
+}
 
 }  // namespace exidel::testing

@@ -179,7 +179,7 @@ private:
     // flatten: everything this calls is inlined into it. GCC otherwise keeps the stacks'
     // push_backs, the free list's and the hull hash's small functions as calls in this
     // loop (about 5% of a run in cpu-clock samples); inlined, the strips ran about 7%
-    // faster on 10^6 uniform points (bench/ab.py, docs/profile.md). Calls into other
+    // faster on 10^6 uniform points (bench/ab.py; docs/measurements.md). Calls into other
     // translation units (the predicates' later stages) stay calls.
     [[gnu::flatten]] std::optional<Failure> insert(std::uint32_t i) {
         const Point2 p = pts_[i];

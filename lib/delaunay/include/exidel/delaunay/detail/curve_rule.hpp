@@ -51,7 +51,7 @@ bool radial_follows_curve(std::span<const Point2> pts, const K& kernel) {
     const std::size_t h = hull.size();
     if (2 * h < m) return false;
     // Points on one circle (up to rounding): every in-circle test is a near-tie whatever
-    // the order, and only the strips' threads help (bench/, README).
+    // the order, and only the strips' threads help (bench/; docs/benchmarks.md).
     {
         const Point2 a = pts[hull[0]], b = pts[hull[h / 3]], c = pts[hull[2 * h / 3]];
         const double bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;

@@ -11,7 +11,7 @@
 // Its cost is the flip count, which depends on how far the fan is from Delaunay: at most
 // n (n - 1) / 2 (no flipped edge returns, flips.hpp), and the sorted fan of points spread
 // over a square starts with long thin triangles that span the whole hull's width. The
-// README's work table and the benchmark give the measured counts.
+// docs/research.md ("The work each algorithm does") and docs/benchmarks.md give the counts.
 #pragma once
 
 #include <cstddef>

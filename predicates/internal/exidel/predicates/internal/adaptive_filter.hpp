@@ -3,11 +3,11 @@
 //
 // adaptive.cpp builds its predicates on them. The library's triangulation includes them
 // too (lib/delaunay/src/inline_adaptive.hpp), so that its hottest calls do not pay an
-// out-of-line call each (docs/profile.md). Only translation units of exidel's own
-// libraries may include this header: the bounds hold for the expressions exactly as
-// written, rounded operation by operation, which the libraries' -ffp-contract=off
-// guarantees and a user's compile line might not (a contracted a*b - c*d is not the
-// expression constants.hpp bounds). fp_hygiene.hpp refuses the flags that can be detected.
+// out-of-line call each (docs/measurements.md, "The adaptive kernel inside the triangulation").
+// Only translation units of exidel's own libraries may include this header: the bounds hold for the
+// expressions exactly as written, rounded operation by operation, which the libraries'
+// -ffp-contract=off guarantees and a user's compile line might not (a contracted a*b - c*d is not
+// the expression constants.hpp bounds). fp_hygiene.hpp refuses the flags that can be detected.
 #pragma once
 
 #include <algorithm>
@@ -15,7 +15,7 @@
 
 #include "exidel/predicates/constants.hpp"
 #include "exidel/predicates/types.hpp"
-#include "fp_hygiene.hpp"
+#include "exidel/predicates/internal/fp_hygiene.hpp"
 
 namespace exidel::detail {
 
