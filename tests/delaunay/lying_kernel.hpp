@@ -19,6 +19,9 @@ struct LyingKernel : KernelWrapper<LyingKernel> {
     mutable delaunay::detail::SplitMix64 rng{1};
     static constexpr bool is_exact = false;
 
+    LyingKernel() = default;
+    LyingKernel(Mode m) : mode(m) {}  // NOLINT(google-explicit-constructor): LyingKernel{mode}
+
     Sign coin() const {
         switch (rng.next() % 3) {
             case 0: return Sign::negative;
