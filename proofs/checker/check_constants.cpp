@@ -112,7 +112,7 @@ void add_range_limits(const std::string& source, const std::string& path,
     for (std::sregex_iterator it(source.begin(), source.end(), limit), end; it != end; ++it) {
         add_unique(values, (*it)[1], Rational((*it)[2].str()), path);
     }
-    const std::regex call(R"(expansion_safe\(\{[^}]*\},\s*(\d+),\s*(\w+)_max_log\))");
+    const std::regex call(R"(expansion_safe\(\s*\{[^}]*\},\s*(\d+),\s*(\w+)_max_log\))");
     for (std::sregex_iterator it(source.begin(), source.end(), call), end; it != end; ++it) {
         // One predicate may call it more than once (orient_max_log: orient2d and the dot
         // products); every call is checked, so keep the smallest degree.
