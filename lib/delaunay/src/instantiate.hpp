@@ -6,10 +6,11 @@
 //   - instantiate/<K>.cpp: triangulate<off and counters, K> and sorted_convex_hull<K>,
 //     with every algorithm's body declared extern (EXIDEL_DELAUNAY_INSTANTIATE_KERNEL);
 //   - instantiate/<K>_<algorithm>.cpp, one per algorithm of EXIDEL_DELAUNAY_ALGORITHMS:
-//     that algorithm's body, detail::run_one, for both instrumentations compiled in the
-//     library and both in-circle policies (EXIDEL_DELAUNAY_INSTANTIATE_ALGORITHM); not
-//     for the kernels of EXIDEL_DELAUNAY_DYNAMIC_KERNELS, whose triangulation runs
-//     DynamicKernel's bodies.
+//     that algorithm's body, detail::run_one, for each instrumentation compiled in the
+//     library (EXIDEL_DELAUNAY_INSTANTIATE_ALGORITHM), for both in-circle policies over
+//     DynamicKernel and for the determinant over the others (their cosine runs are
+//     DynamicKernel's); not for the kernels of EXIDEL_DELAUNAY_DYNAMIC_KERNELS, whose
+//     triangulation runs DynamicKernel's bodies.
 // CMake reads the three lists from registry.hpp, algorithms.hpp and triangulate.hpp, so
 // a new kernel or algorithm needs no edit here; one the generator missed is an undefined
 // reference when the library's users link (triangulate.hpp declares every registry kernel
@@ -50,12 +51,21 @@ struct RunKernel<AdaptiveKernel> {
 #define EXIDEL_DELAUNAY_RUN_ALL_(prefix, Type, K, I)          \
     EXIDEL_DELAUNAY_RUN_ONE_(prefix, Type, K, I, determinant) \
     EXIDEL_DELAUNAY_RUN_ONE_(prefix, Type, K, I, cosine)
+// The policies whose bodies a kernel's translation units compile: both for DynamicKernel,
+// the determinant for the others (their cosine runs are DynamicKernel's:
+// detail::cosine_runs_dynamic). CMake names one of the two in each generated file.
+#define EXIDEL_DELAUNAY_POLICIES_both(prefix, Type, K, I) \
+    EXIDEL_DELAUNAY_RUN_ALL_(prefix, Type, K, I)
+#define EXIDEL_DELAUNAY_POLICIES_determinant(prefix, Type, K, I) \
+    EXIDEL_DELAUNAY_RUN_ONE_(prefix, Type, K, I, determinant)
 
 // Every algorithm's body for detail::InstantiatedKernel, declared extern: compiled in the
 // translation units of EXIDEL_DELAUNAY_INSTANTIATE_ALGORITHM, never where it is called.
 #define EXIDEL_DELAUNAY_EXTERN_ALGORITHM_(name, spelling, Type, takes_order, summary) \
     EXIDEL_DELAUNAY_RUN_ALL_(extern template, Type, InstantiatedKernel, off)          \
-    EXIDEL_DELAUNAY_RUN_ALL_(extern template, Type, InstantiatedKernel, counters)
+    EXIDEL_DELAUNAY_RUN_ALL_(extern template, Type, InstantiatedKernel, counters)     \
+    EXIDEL_DELAUNAY_RUN_ALL_(extern template, Type, DynamicKernel, off)               \
+    EXIDEL_DELAUNAY_RUN_ALL_(extern template, Type, DynamicKernel, counters)
 #define EXIDEL_DELAUNAY_EXTERN_ALGORITHMS(K)                      \
     namespace exidel::delaunay::detail {                          \
     using InstantiatedKernel = RunKernel<K>::type;                \
@@ -73,8 +83,8 @@ struct RunKernel<AdaptiveKernel> {
     }
 
 // The body of algorithm Type over RunKernel<K>, uninstrumented (off) or counted
-// (counters), for both in-circle policies.
-#define EXIDEL_DELAUNAY_INSTANTIATE_ALGORITHM(K, Type, I)           \
-    namespace exidel::delaunay::detail {                            \
-    EXIDEL_DELAUNAY_RUN_ALL_(template, Type, RunKernel<K>::type, I) \
+// (counters), for the in-circle policies `policies` (both or determinant).
+#define EXIDEL_DELAUNAY_INSTANTIATE_ALGORITHM(K, Type, I, policies)            \
+    namespace exidel::delaunay::detail {                                       \
+    EXIDEL_DELAUNAY_POLICIES_##policies(template, Type, RunKernel<K>::type, I) \
     }

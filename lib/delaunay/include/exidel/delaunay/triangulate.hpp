@@ -104,6 +104,17 @@ Result triangulate(std::span<const Point2> points, const K& kernel, const Option
 
 namespace detail {
 
+/// Whether a run of kernel K with the cosine in-circle policy goes through DynamicKernel:
+/// always, but for DynamicKernel itself and Instrumentation::theorem1 (which the tests
+/// that use it compile for their own kernels). The cosine test is the paper's alternative
+/// to the determinant, asked by the research studies and `--incircle cosine`; its
+/// algorithm bodies are compiled once, for DynamicKernel, instead of once per kernel
+/// (lib/delaunay/CMakeLists.txt compiles only the determinant's for the others). The
+/// answers are the kernel's, call for call; the run pays an indirect call per predicate.
+template <class K, Instrumentation I>
+inline constexpr bool cosine_runs_dynamic =
+    I != Instrumentation::theorem1 && !std::is_same_v<K, DynamicKernel>;
+
 /// triangulate's body, for every kernel.
 template <Instrumentation I, PredicateKernel K>
 Result triangulate_with(std::span<const Point2> points, const K& kernel, const Options& options) {
@@ -115,7 +126,12 @@ Result triangulate_with(std::span<const Point2> points, const K& kernel, const O
         return r;
     }
     if (options.incircle == InCirclePolicy::cosine) {
-        return detail::run_algorithm<K, I, InCirclePolicy::cosine>(kernel, input, options);
+        if constexpr (cosine_runs_dynamic<K, I>) {
+            return detail::run_algorithm<DynamicKernel, I, InCirclePolicy::cosine>(
+                DynamicKernel(kernel), input, options);
+        } else {
+            return detail::run_algorithm<K, I, InCirclePolicy::cosine>(kernel, input, options);
+        }
     }
     return detail::run_algorithm<K, I, InCirclePolicy::determinant>(kernel, input, options);
 }
