@@ -6,10 +6,11 @@
 //   - instantiate/<K>.cpp: triangulate<off and counters, K> and sorted_convex_hull<K>,
 //     with every algorithm's body declared extern (EXIDEL_DELAUNAY_INSTANTIATE_KERNEL);
 //   - instantiate/<K>_<algorithm>.cpp, one per algorithm of EXIDEL_DELAUNAY_ALGORITHMS:
-//     that algorithm's body, detail::run_one, for each instrumentation compiled in the
-//     library (EXIDEL_DELAUNAY_INSTANTIATE_ALGORITHM), for both in-circle policies over
-//     DynamicKernel and for the determinant over the others (their cosine runs are
-//     DynamicKernel's); not for the kernels of EXIDEL_DELAUNAY_DYNAMIC_KERNELS, whose
+//     that algorithm's body, detail::run_one (EXIDEL_DELAUNAY_INSTANTIATE_ALGORITHM):
+//     over DynamicKernel counted, for both in-circle policies (its uninstrumented runs
+//     are counted ones with the counts dropped); over the double kernel uninstrumented
+//     and the adaptive one both ways, for the determinant (their cosine runs are
+//     DynamicKernel's); none for the kernels of EXIDEL_DELAUNAY_DYNAMIC_KERNELS, whose
 //     triangulation runs DynamicKernel's bodies.
 // CMake reads the three lists from registry.hpp, algorithms.hpp and triangulate.hpp, so
 // a new kernel or algorithm needs no edit here; one the generator missed is an undefined

@@ -127,8 +127,12 @@ Result triangulate_with(std::span<const Point2> points, const K& kernel, const O
     }
     if (options.incircle == InCirclePolicy::cosine) {
         if constexpr (cosine_runs_dynamic<K, I>) {
-            return detail::run_algorithm<DynamicKernel, I, InCirclePolicy::cosine>(
-                DynamicKernel(kernel), input, options);
+            // DynamicKernel's bodies are the counted ones (see triangulate).
+            Result r = detail::run_algorithm<DynamicKernel, Instrumentation::counters,
+                                             InCirclePolicy::cosine>(DynamicKernel(kernel), input,
+                                                                     options);
+            if constexpr (I == Instrumentation::off) r.counters = Counters{};
+            return r;
         } else {
             return detail::run_algorithm<K, I, InCirclePolicy::cosine>(kernel, input, options);
         }
@@ -182,6 +186,14 @@ Result triangulate(std::span<const Point2> points, const K& kernel, const Option
         return detail::triangulate_adaptive<I>(points, options);
     } else if constexpr (detail::runs_dynamic<K, I>) {
         return triangulate<I>(points, DynamicKernel(kernel), options);
+    } else if constexpr (std::is_same_v<K, DynamicKernel> && I == Instrumentation::off) {
+        // The library compiles DynamicKernel's algorithm bodies counted only: its kernels'
+        // predicates (exact, MPFR, or behind an indirect call) cost far more than an
+        // increment, and one set of bodies instead of two halves their compile time. The
+        // counts are dropped: an uninstrumented result has none.
+        Result r = triangulate<Instrumentation::counters>(points, kernel, options);
+        r.counters = Counters{};
+        return r;
     } else {
         return detail::triangulate_with<I>(points, kernel, options);
     }
