@@ -25,6 +25,7 @@
 #include "exidel/predicates/registry.hpp"
 #include "exidel/io/points.hpp"
 #include "exidel/io/triangulation.hpp"
+#include "exidel/io/triangulation_input.hpp"
 #include "run_binary.hpp"
 
 namespace {
@@ -529,7 +530,8 @@ TEST(ExidelTriangulate, EleComesWithANodeFileOfTheSameBase) {
     EXPECT_EQ(slurp(companion), node.str());  // the same numbering, the same doubles
     const auto read = io::parse_point_file(slurp(companion), io::PointFormat::node);
     EXPECT_EQ(read.index_base, 1u);
-    auto tri = io::read_triangulation(ele_text, io::TriangulationFormat::ele, read.points);
+    auto tri = exidel::delaunay::normalize(
+        read.points, io::read_produced(ele_text, io::ProducedFormat::ele, read.points));
     EXPECT_TRUE(exidel::delaunay::certify(read.points, tri).ok());
     EXPECT_EQ(ele_text.substr(ele_text.find('\n') + 1, 2), "1 ");  // triangles from 1 too
     // Reading based.node and writing based.ele leaves the input alone.
@@ -674,7 +676,7 @@ TEST(ExidelCertify, CertifiesJsonAndEleAndReportsFindings) {
     EXPECT_EQ(malformed.status, 1);
     EXPECT_NE(malformed.err.find("bad.ele: line 2: "), std::string::npos) << malformed.err;
     EXPECT_EQ(run_exidel("cert", "certify " + kite, "").status, 2);
-    EXPECT_EQ(run_exidel("cert", "certify " + kite + " " + work_path("x.off"), "").status, 2);
+    EXPECT_EQ(run_exidel("cert", "certify " + kite + " " + work_path("x.svg"), "").status, 2);
     EXPECT_EQ(run_exidel("cert", "certify --help", "").status, 0);
 }
 

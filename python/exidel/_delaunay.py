@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from . import _core
@@ -160,21 +162,51 @@ class Delaunay:
                 f"kernel {self.kernel}, algorithm {self.stats['algorithm']}>")
 
 
-class Certificate:
-    """What exidel.certify found: .ok, .findings (a list of dicts with kind, index, other,
-    message; at most 64), .total_findings, .kinds (the set of finding kinds).
+@dataclass(frozen=True)
+class Finding:
+    """One defect the certifier found, located.
 
-    An index names a half-edge 3t + k (the edge from vertex k of triangle t to the next),
-    a triangle, a hull position or an input point, as the message says. For a bare array
-    of simplices, t is the row of that array and k counts in the certified order: a
-    clockwise row has had its vertices 1 and 2 swapped (reorient=True), and a repeated
-    point is its first occurrence."""
+    kind      the FindingKind name: "not_ccw", "not_delaunay", "missing_point", ...
+    message   what and where in words, naming triangles and points by index:
+              "triangle 18 (4, 9, 2) is clockwise"
+    triangle  the triangle concerned, its row in the simplices given (-1 when none)
+    points    the input points concerned, in the message's order (a repeated point by its
+              first occurrence); for not_delaunay (a, b, c, d): edge (a, b) of triangle
+              (a, b, c), and d, strictly inside its circumcircle
+    index, other  the C++ Finding's raw indices (half-edge, hull position, ...)
+    """
+
+    kind: str
+    message: str
+    triangle: int = -1
+    points: tuple = ()
+    index: int = -1
+    other: int = -1
+
+    def __str__(self):
+        return f"{self.kind}: {self.message}"
+
+
+class Certificate:
+    """What exidel.certify found.
+
+    ok              True when the triangulation is the Delaunay triangulation
+    findings        list of Finding (the first 64 unless certify(..., all=True))
+    total_findings  how many there are in all
+    kinds           the set of finding kinds among .findings
+    notes           what was normalised before certifying (clockwise triangles turned,
+                    later copies of repeated points renamed, the hull reversed or
+                    rotated), one sentence each
+    """
 
     def __init__(self, d):
         self.ok = bool(d["ok"])
         self.total_findings = int(d["total_findings"])
-        self.findings = list(d["findings"])
-        self.kinds = {f["kind"] for f in self.findings}
+        self.findings = [Finding(f["kind"], f["message"], int(f["triangle"]),
+                                 tuple(int(p) for p in f["points"]), int(f["index"]),
+                                 int(f["other"])) for f in d["findings"]]
+        self.kinds = {f.kind for f in self.findings}
+        self.notes = list(d["notes"])
 
     def __bool__(self):
         return self.ok
@@ -182,33 +214,57 @@ class Certificate:
     def __repr__(self):
         if self.ok:
             return "<exidel.Certificate: Delaunay>"
-        first = self.findings[0]
-        return (f"<exidel.Certificate: {self.total_findings} findings, first {first['kind']}: "
-                f"{first['message']}>")
+        return (f"<exidel.Certificate: {self.total_findings} findings, first "
+                f"{self.findings[0]}>")
 
 
-def certify(points, triangulation, reorient=True):
-    """Decides exactly whether `triangulation` is a Delaunay triangulation of `points`.
+def certify(points, triangulation, reorient=True, all=False):
+    """Decides exactly whether `triangulation` is the Delaunay triangulation of `points`,
+    with the same reader conventions and findings as `exidel certify`.
 
-    triangulation  an exidel.Delaunay, or any (m, 3) integer array of triangles (for
-                   instance scipy.spatial.Delaunay(points).simplices). From a bare array
-                   the rest is derived: twins from shared edges, the boundary cycle,
-                   duplicates from the points; with reorient=True (the default) clockwise
-                   triangles are turned counter-clockwise first, since scipy does not fix
-                   the orientation. Any copy of a repeated point may stand for it. An
-                   empty array claims that the points are collinear.
+    triangulation  any of:
+                   - an exidel.Delaunay;
+                   - a scipy.spatial.Delaunay, or anything with a .simplices array;
+                   - an (m, 3) integer array of triangles (scipy's simplices, a mesher's);
+                   - delaunator's arrays: a dict or object with "triangles" (flat) and
+                     optionally "halfedges" and "hull".
+                   What is not given is derived: twins from shared edges, the hull from
+                   the boundary, duplicates from the points. An empty array claims that
+                   the points are collinear.
+    reorient       True (default): normalise the producers' conventions first (a later
+                   copy of a repeated point stands for its first occurrence, clockwise
+                   triangles are turned with their twins, a clockwise or rotated hull is
+                   put in order; Certificate.notes says what changed). False: hold the
+                   triangulation to exidel's own layout, as `exidel certify --strict`.
+    all            keep every finding (default: the first 64; all are counted).
     Checks: shape, topology, every triangle counter-clockwise, the boundary is the convex
     hull, every distinct point is a vertex, Euler's count, every edge locally Delaunay
-    (exact predicates throughout). Returns a Certificate.
+    (exact predicates throughout). A finding's triangle is a row of what was given.
+    Returns a Certificate.
     """
     pts = np.ascontiguousarray(points, dtype=np.float64)
+    limit = -1 if all else 64
+    arrays = {}
     if isinstance(triangulation, Delaunay):
         t = triangulation
-        return Certificate(_core.certify_arrays(pts, t.simplices, t.halfedges, t.hull,
-                                                t.vertex_of_input, t.duplicates, t.collinear))
-    simplices = np.asarray(triangulation)
-    if simplices.size == 0:
-        simplices = np.empty((0, 3), dtype=np.int64)
-    if not np.issubdtype(simplices.dtype, np.integer):
-        raise ValueError("simplices: expected an integer array of shape (m, 3)")
-    return Certificate(_core.certify_simplices(pts, simplices, reorient))
+        triangles = t.simplices
+        arrays = dict(halfedges=t.halfedges, hull=t.hull, duplicates=t.duplicates)
+    elif isinstance(triangulation, dict) or hasattr(triangulation, "triangles"):
+        get = (triangulation.get if isinstance(triangulation, dict)
+               else lambda k: getattr(triangulation, k, None))
+        triangles = np.asarray(get("triangles"))
+        for key in ("halfedges", "hull", "duplicates"):
+            if get(key) is not None:
+                arrays[key] = np.asarray(get(key))
+    else:
+        triangles = np.asarray(getattr(triangulation, "simplices", triangulation))
+    if triangles.size == 0:
+        triangles = np.empty((0, 3), dtype=np.int64)
+    if not np.issubdtype(triangles.dtype, np.integer):
+        raise ValueError("triangles: expected integers (an (m, 3) simplices array or a flat "
+                         "delaunator triangles array)")
+    if triangles.ndim == 2 and triangles.shape[1] != 3 or triangles.ndim > 2 or \
+            triangles.size % 3 != 0:
+        raise ValueError(f"triangles: expected shape (m, 3) or (3m,), got {triangles.shape}")
+    return Certificate(_core.certify(pts, triangles.reshape(-1), strict=not reorient,
+                                     max_findings=limit, **arrays))

@@ -191,12 +191,11 @@ def certificate(points, tri, cert=None, ax=None, *, reorient=True, show_triangul
     points, duplicate vertices, non-convex boundary turns). The title counts the
     findings by kind.
 
-    tri   an exidel.Delaunay, a scipy.spatial.Delaunay, or an (m, 3) simplices array
-          (as for exidel.certify)
+    tri   an exidel.Delaunay, a scipy.spatial.Delaunay, an (m, 3) simplices array or
+          delaunator's arrays (as for exidel.certify)
     cert  the exidel.certify(points, tri, reorient) Certificate; computed when None
-    reorient  as for exidel.certify: with a bare array the finding indices refer to the
-          triangles with clockwise ones turned (vertices 1 and 2 swapped); give the same
-          value here as to certify."""
+    reorient  as for exidel.certify (the findings name their points, so a certificate
+          computed either way can be drawn); clockwise triangles are drawn turned."""
     from matplotlib.collections import LineCollection, PolyCollection
 
     from ._delaunay import Delaunay, certify
@@ -204,15 +203,17 @@ def certificate(points, tri, cert=None, ax=None, *, reorient=True, show_triangul
     ax = _axes(ax)
     pts = np.asarray(points, dtype=np.float64)
     if isinstance(tri, Delaunay):
-        simplices = np.asarray(tri.simplices, dtype=np.int64)
         target, drawn = tri, tri
     else:
-        raw = tri.simplices if hasattr(tri, "simplices") else tri
+        if isinstance(tri, dict):  # delaunator's arrays
+            raw = tri["triangles"]
+        else:
+            raw = getattr(tri, "simplices", getattr(tri, "triangles", tri))
         simplices = np.asarray(raw, dtype=np.int64).reshape(-1, 3)
         in_range = simplices.size == 0 or (simplices.min() >= 0 and simplices.max() < len(pts))
         if in_range and reorient:
             simplices = _oriented(pts, simplices)
-        target = simplices
+        target = tri
         drawn = SimpleNamespace(points=pts, simplices=simplices if in_range else np.empty((0, 3), np.int64),
                                 coplanar=getattr(tri, "coplanar", np.empty((0, 3))))
     if cert is None:
@@ -220,22 +221,18 @@ def certificate(points, tri, cert=None, ax=None, *, reorient=True, show_triangul
     if show_triangulation:
         triangulation(drawn, ax=ax, hull=True, duplicates=False, edgecolor="0.6")
 
-    flat = simplices.reshape(-1)
     edges, inside, bad, marked = [], [], [], []
-    for f in cert.findings:
-        kind, i, o = f["kind"], int(f["index"]), int(f["other"])
-        if kind == "not_delaunay" and 0 <= i < flat.size:
-            t, k = divmod(i, 3)
-            a, b = flat[3 * t + k], flat[3 * t + (k + 1) % 3]
+    for f in cert.findings:  # every Finding names its points (input indices)
+        if f.kind == "not_delaunay" and len(f.points) == 4:
+            a, b, _, d = f.points
             edges.append(pts[[a, b]])
-            if 0 <= o < len(pts):
-                inside.append(o)
-        elif kind in ("not_ccw", "degenerate_triangle") and 0 <= i < len(simplices):
-            bad.append(pts[simplices[i]])
-        elif kind in ("missing_point", "duplicate_vertex") and 0 <= i < len(pts):
-            marked.append(i)
-        elif kind == "boundary_not_convex" and 0 <= o < len(pts):
-            marked.append(o)
+            inside.append(d)
+        elif f.kind in ("not_ccw", "degenerate_triangle") and len(f.points) == 3:
+            bad.append(pts[list(f.points)])
+        elif f.kind in ("missing_point", "duplicate_vertex") and f.points:
+            marked.append(f.points[0])
+        elif f.kind == "boundary_not_convex" and len(f.points) == 3:
+            marked.append(f.points[1])
     if bad:
         ax.add_collection(PolyCollection(bad, facecolors=(*_RED, 0.35), edgecolors=_RED,
                                          linewidths=1.2, gid="bad_triangles", zorder=5))
@@ -254,7 +251,7 @@ def certificate(points, tri, cert=None, ax=None, *, reorient=True, show_triangul
     else:
         kinds = {}
         for f in cert.findings:
-            kinds[f["kind"]] = kinds.get(f["kind"], 0) + 1
+            kinds[f.kind] = kinds.get(f.kind, 0) + 1
         shown = ", ".join(f"{k} {n}" for k, n in kinds.items())
         more = "" if cert.total_findings == len(cert.findings) else \
             f" (first {len(cert.findings)} of {cert.total_findings})"

@@ -4,10 +4,9 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <numeric>
 #include <optional>
+#include <pybind11/stl.h>
 #include <string>
-#include <unordered_map>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -116,96 +115,9 @@ py::dict triangulate(py::object points_object, const std::string& kernel_name,
 }
 
 // ---------------------------------------------------------------------------------
-// Certifying a bare list of triangles (scipy's simplices, a user's mesher): the rest of
-// a Triangulation is derived from them, as faithfully as the input allows; whatever
-// cannot be derived (an index out of range, an edge of three triangles, a boundary that
-// is not one cycle) is left for the certifier to report.
-
-/// For every input index the index of the first equal point, and the repeats.
-void vertex_map(std::span<const Point2> p, delaunay::Triangulation& t) {
-    std::vector<std::uint32_t> order(p.size());
-    std::iota(order.begin(), order.end(), 0u);
-    std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-        return p[a].x < p[b].x || (p[a].x == p[b].x && p[a].y < p[b].y);
-    });
-    t.vertex_of_input.assign(p.size(), 0);
-    for (std::size_t k = 0; k < order.size(); ++k) {
-        const std::uint32_t i = order[k];
-        const bool repeat = k > 0 && p[order[k - 1]] == p[i];
-        t.vertex_of_input[i] = repeat ? t.vertex_of_input[order[k - 1]] : i;
-        if (repeat) t.duplicates.push_back(i);
-    }
-    std::sort(t.duplicates.begin(), t.duplicates.end());
-}
-
-/// Twins by matching reversed edges; the boundary cycle from the lexicographically
-/// smallest vertex with an outgoing boundary half-edge.
-void derive_topology(std::span<const Point2> p, delaunay::Triangulation& t) {
-    const std::size_t e_count = t.triangles.size();
-    t.halfedges.assign(e_count, -1);
-    const auto key = [](std::uint64_t a, std::uint64_t b) { return (a << 32) | b; };
-    std::unordered_map<std::uint64_t, std::uint32_t> edge;
-    edge.reserve(e_count);
-    for (std::size_t e = 0; e < e_count; ++e) {
-        edge.emplace(key(t.triangles[e], t.triangles[delaunay::next_halfedge(e)]),
-                     static_cast<std::uint32_t>(e));
-    }
-    for (std::size_t e = 0; e < e_count; ++e) {
-        if (t.halfedges[e] >= 0) continue;
-        const auto it = edge.find(key(t.triangles[delaunay::next_halfedge(e)], t.triangles[e]));
-        if (it == edge.end() || t.halfedges[it->second] >= 0 || it->second == e) continue;
-        t.halfedges[e] = static_cast<std::int32_t>(it->second);
-        t.halfedges[it->second] = static_cast<std::int32_t>(e);
-    }
-    std::unordered_map<std::uint32_t, std::uint32_t> boundary_from;  // start vertex -> end
-    std::optional<std::uint32_t> first;
-    for (std::size_t e = 0; e < e_count; ++e) {
-        if (t.halfedges[e] >= 0) continue;
-        const std::uint32_t a = t.triangles[e];
-        boundary_from.emplace(a, t.triangles[delaunay::next_halfedge(e)]);
-        if (!first || p[a].x < p[*first].x || (p[a].x == p[*first].x && p[a].y < p[*first].y))
-            first = a;
-    }
-    if (!first) return;
-    std::uint32_t v = *first;
-    for (std::size_t steps = 0; steps <= boundary_from.size(); ++steps) {
-        t.hull.push_back(v);
-        const auto it = boundary_from.find(v);
-        if (it == boundary_from.end() || it->second == *first) break;
-        v = it->second;
-    }
-}
-
-/// The distinct points lexicographically (first occurrences): the chain of a result with
-/// no triangles.
-std::vector<std::uint32_t> lexicographic_chain(std::span<const Point2> p,
-                                               const delaunay::Triangulation& t) {
-    std::vector<std::uint32_t> chain;
-    for (std::uint32_t i = 0; i < p.size(); ++i) {
-        if (t.vertex_of_input[i] == i) chain.push_back(i);
-    }
-    std::sort(chain.begin(), chain.end(), [&](std::uint32_t a, std::uint32_t b) {
-        return p[a].x < p[b].x || (p[a].x == p[b].x && p[a].y < p[b].y);
-    });
-    return chain;
-}
-
-py::dict certificate_dict(const delaunay::Certificate& c) {
-    py::list findings;
-    for (const delaunay::Finding& f : c.findings) {
-        py::dict d;
-        d["kind"] = std::string(delaunay::to_string(f.kind));
-        d["index"] = f.index;
-        d["other"] = f.other;
-        d["message"] = f.message;
-        findings.append(d);
-    }
-    py::dict d;
-    d["ok"] = c.ok();
-    d["total_findings"] = c.total_findings;
-    d["findings"] = findings;
-    return d;
-}
+// Certifying what any producer wrote: its arrays go through delaunay::normalize (the
+// conventions of delaunator, scipy, Triangle, CGAL) and the certifier, as in
+// `exidel certify`.
 
 using IndexArray = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>;
 
@@ -219,68 +131,59 @@ std::vector<std::uint32_t> to_indices(const IndexArray& a) {
     return out;
 }
 
-py::dict certify_simplices(py::object points_object, IndexArray simplices, bool reorient) {
+py::dict certify_produced(py::object points_object, IndexArray triangles,
+                          std::optional<IndexArray> halfedges, std::optional<IndexArray> hull,
+                          std::optional<IndexArray> duplicates, bool strict,
+                          std::int64_t max_findings) {
     const Points points = to_points(points_object, "points");
     if (points.single) throw py::value_error("points: expected shape (n, 2), got (2,)");
-    if (!(simplices.ndim() == 2 && simplices.shape(1) == 3) &&
-        !(simplices.ndim() == 1 && simplices.shape(0) == 0)) {
-        throw py::value_error("simplices: expected an integer array of shape (m, 3)");
-    }
-    const std::span<const Point2> p = points.span();
-    delaunay::Triangulation t;
-    t.triangles = to_indices(simplices);
-    delaunay::Certificate c;
-    {
-        py::gil_scoped_release release;
-        vertex_map(p, t);
-        const bool in_range = std::all_of(t.triangles.begin(), t.triangles.end(),
-                                          [&](std::uint32_t v) { return v < p.size(); });
-        if (t.triangles.empty()) {
-            t.collinear = true;
-            t.hull = lexicographic_chain(p, t);
-        } else if (in_range) {
-            // Any copy of a repeated point may stand for it (scipy uses whichever copy
-            // qhull kept): the certifier's vertices are first occurrences.
-            for (std::uint32_t& v : t.triangles) v = t.vertex_of_input[v];
-            if (reorient) {
-                for (std::size_t i = 0; i < t.triangles.size(); i += 3) {
-                    auto* v = &t.triangles[i];
-                    if (AdaptiveKernel::orient2d(p[v[0]], p[v[1]], p[v[2]]) == Sign::negative) {
-                        std::swap(v[1], v[2]);
-                    }
-                }
-            }
-            derive_topology(p, t);
-        } else {
-            t.halfedges.assign(t.triangles.size(), -1);
+    delaunay::ProducedTriangulation produced;
+    produced.triangles = to_indices(triangles);
+    if (halfedges) {
+        std::vector<std::int32_t> h(static_cast<std::size_t>(halfedges->size()));
+        for (std::size_t i = 0; i < h.size(); ++i) {
+            const std::int64_t v = halfedges->data()[i];
+            // Out of [-1, 2^31): an index the certifier reports as out of range.
+            h[i] = v < -1 || v > 0x7fffffffLL ? std::int32_t{0x7fffffff}
+                                              : static_cast<std::int32_t>(v);
         }
-        c = delaunay::certify(p, t);
+        produced.halfedges = std::move(h);
     }
-    return certificate_dict(c);
-}
-
-py::dict certify_arrays(py::object points_object, IndexArray triangles, IndexArray halfedges,
-                        IndexArray hull, IndexArray vertex_of_input, IndexArray duplicates,
-                        bool collinear) {
-    const Points points = to_points(points_object, "points");
-    delaunay::Triangulation t;
-    t.triangles = to_indices(triangles);
-    t.halfedges.resize(static_cast<std::size_t>(halfedges.size()));
-    for (std::size_t i = 0; i < t.halfedges.size(); ++i) {
-        const std::int64_t h = halfedges.data()[i];
-        t.halfedges[i] =
-            h < -1 || h > 0x7fffffffLL ? std::int32_t{0x7fffffff} : static_cast<std::int32_t>(h);
-    }
-    t.hull = to_indices(hull);
-    t.vertex_of_input = to_indices(vertex_of_input);
-    t.duplicates = to_indices(duplicates);
-    t.collinear = collinear;
+    if (hull) produced.hull = to_indices(*hull);
+    if (duplicates) produced.duplicates = to_indices(*duplicates);
+    delaunay::Normalization normalization;
     delaunay::Certificate c;
+    std::size_t triangle_count = 0;
     {
         py::gil_scoped_release release;
-        c = delaunay::certify(points.span(), t);
+        const delaunay::Triangulation t =
+            delaunay::normalize(points.span(), std::move(produced), &normalization, strict);
+        triangle_count = t.triangle_count();
+        delaunay::CertifyOptions options;
+        if (max_findings >= 0)
+            options.max_findings = static_cast<std::size_t>(max_findings);
+        else
+            options.max_findings = static_cast<std::size_t>(-1);
+        c = delaunay::certify(points.span(), t, options);
     }
-    return certificate_dict(c);
+    py::list findings;
+    for (const delaunay::Finding& f : c.findings) {
+        py::dict d;
+        d["kind"] = std::string(delaunay::to_string(f.kind));
+        d["message"] = f.message;
+        d["triangle"] = f.triangle;
+        d["points"] = py::tuple(py::cast(f.points));
+        d["index"] = f.index;
+        d["other"] = f.other;
+        findings.append(d);
+    }
+    py::dict d;
+    d["ok"] = c.ok();
+    d["total_findings"] = c.total_findings;
+    d["findings"] = findings;
+    d["notes"] = normalization.notes();
+    d["triangles"] = triangle_count;
+    return d;
 }
 
 }  // namespace
@@ -292,11 +195,13 @@ void bind_delaunay(py::module_& m) {
           "The Delaunay triangulation's arrays (triangles (m, 3), halfedges, hull, "
           "vertex_of_input, duplicates, collinear), or 'failure' when an inexact kernel "
           "contradicted itself. exidel.Delaunay wraps this.");
-    m.def("certify_simplices", &certify_simplices, py::arg("points"), py::arg("simplices"),
-          py::arg("reorient") = true);
-    m.def("certify_arrays", &certify_arrays, py::arg("points"), py::arg("triangles"),
-          py::arg("halfedges"), py::arg("hull"), py::arg("vertex_of_input"), py::arg("duplicates"),
-          py::arg("collinear"));
+    m.def("certify", &certify_produced, py::arg("points"), py::arg("triangles"),
+          py::arg("halfedges") = py::none(), py::arg("hull") = py::none(),
+          py::arg("duplicates") = py::none(), py::arg("strict") = false,
+          py::arg("max_findings") = 64,
+          "delaunay::normalize then delaunay::certify: a dict with ok, total_findings, "
+          "findings (kind, message, triangle, points, index, other), notes, triangles. "
+          "max_findings < 0 keeps every finding. exidel.certify wraps this.");
 }
 
 }  // namespace exidel::python

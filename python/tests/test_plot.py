@@ -135,7 +135,7 @@ def test_certificate_of_a_clockwise_triangle_and_of_scipy(tmp_path):
     s = scipy_spatial.Delaunay(pts)
     cert = exidel.certify(pts, s.simplices)
     ax = plot.certificate(pts, s)
-    n = sum(f["kind"] == "not_delaunay" for f in cert.findings)
+    n = sum(f.kind == "not_delaunay" for f in cert.findings)
     red = artist(ax, "not_delaunay")
     assert (len(red.get_segments()) if red is not None else 0) == n
     assert len(artist(ax, "triangles").get_paths()) == len(s.simplices)

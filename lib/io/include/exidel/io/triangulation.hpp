@@ -1,5 +1,5 @@
 // exidel I/O: writing a triangulation (exidel/delaunay/result.hpp), and reading back the
-// JSON form.
+// JSON form (other producers' output, for the certifier: exidel/io/triangulation_input.hpp).
 //
 // Formats. Vertex indices are always input indices (0-based, the position of the point
 // in the input; a duplicated point is represented by its first occurrence).
@@ -68,20 +68,5 @@ delaunay::Triangulation parse_triangulation_json(std::string_view text);
 /// Rebuilds tri.vertex_of_input (each input index -> its first occurrence) from the
 /// points, so a triangulation read back from json can be certified.
 void fill_vertex_of_input(std::span<const Point2> points, delaunay::Triangulation& tri);
-
-/// A triangulation of `points` from a file, ready for delaunay::certify: every array the
-/// file does not hold is derived from what it holds, so that the certifier judges the
-/// triangles themselves.
-///   json  the layout above; "duplicates" may be absent (delaunator writes none) and is
-///         then derived from the points.
-///   ele   Triangle's .ele ("ntriangles 3 [attributes]", then "t v0 v1 v2 [attributes]",
-///         '#' comments), counted from the first triangle's number (0 or 1, as Triangle
-///         numbers both files); halfedges are linked from the triangles (an edge used
-///         twice in one direction stays unlinked), the hull is the boundary cycle from
-///         the lexicographically smallest boundary vertex (empty when the boundary is not
-///         one cycle), duplicates are derived.
-/// Other formats: std::invalid_argument. Malformed text: ReadError with its line.
-delaunay::Triangulation read_triangulation(std::string_view text, TriangulationFormat format,
-                                           std::span<const Point2> points);
 
 }  // namespace exidel::io
