@@ -2,11 +2,17 @@
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass
 
 import numpy as np
 
 from . import _core
+
+
+def default_threads():
+    """The thread count the exidel command uses by default: the hardware's."""
+    return max(1, os.cpu_count() or 1)
 
 
 class TriangulationError(RuntimeError):
@@ -31,7 +37,7 @@ class Delaunay:
     """The Delaunay triangulation of 2D points, exact with an exact kernel.
 
     Delaunay(points, kernel="adaptive", algorithm="external", incircle="determinant",
-             order="auto", threads=1, counters=False)
+             order="auto", threads=None, counters=False)
 
     points     array of shape (n, 2), float64 (other dtypes are converted once). Every
                finite input is accepted: duplicates (kept out of the triangulation and
@@ -47,7 +53,8 @@ class Delaunay:
     incircle   "determinant" or "cosine" (the paper's cosine test).
     order      the external algorithm's insertion order: "auto", "lexicographic",
                "radial", "strips".
-    threads    worker threads of the strips order (the result does not depend on it).
+    threads    worker threads of the strips order (the result does not depend on it);
+               None (the default): the hardware's thread count, as the exidel command.
     counters   record predicate calls, flips, ... in .stats["counters"].
 
     Attributes with scipy's names and meaning:
@@ -75,8 +82,9 @@ class Delaunay:
     ndim = 2
 
     def __init__(self, points, kernel="adaptive", algorithm="external", incircle="determinant",
-                 order="auto", threads=1, counters=False):
+                 order="auto", threads=None, counters=False):
         self.points = np.ascontiguousarray(points, dtype=np.float64)
+        threads = default_threads() if threads is None else threads
         r = _core.triangulate(self.points, kernel, algorithm, incircle, order, threads, counters)
         failure = r.get("failure")
         if failure is not None:

@@ -3,14 +3,12 @@ and correctly rounded vertices."""
 
 from __future__ import annotations
 
+import gc
+
 import numpy as np
 
 from . import _core
-from ._delaunay import TriangulationError
-
-
-def _split(offsets, values):
-    return [values[offsets[k]:offsets[k + 1]] for k in range(offsets.size - 1)]
+from ._delaunay import TriangulationError, default_threads
 
 
 class ClippedVoronoi:
@@ -21,22 +19,22 @@ class ClippedVoronoi:
                    rounded value of an exact point
     voronoi_vertex_count  how many of them are Voronoi vertices
     regions        per input point, the vertex indices of its clipped cell,
-                   counter-clockwise (empty when the cell misses the box)
-    vertex_sites   per vertex, the sites whose cells have it as a corner
+                   counter-clockwise (empty when the cell misses the box); lists of ints
+    vertex_sites   per vertex, the sites whose cells have it as a corner; lists of ints
     """
 
     def __init__(self, d):
         self.vertices = d["vertices"]
         self.voronoi_vertex_count = int(d["voronoi_vertex_count"])
-        self.regions = _split(d["cell_offsets"], d["cell_vertices"])
-        self.vertex_sites = _split(d["site_offsets"], d["sites"])
+        self.regions = _core.split_lists(d["cell_offsets"], d["cell_vertices"])
+        self.vertex_sites = _core.split_lists(d["site_offsets"], d["sites"])
         self.unbounded = d["unbounded"]
 
 
 class Voronoi:
     """The Voronoi diagram of 2D points.
 
-    Voronoi(points, kernel="adaptive", algorithm="external", threads=1)
+    Voronoi(points, kernel="adaptive", algorithm="external", threads=None)
 
     Every vertex is the centre of a maximal set of exactly cocircular Delaunay triangles
     (decided by the kernel's in-circle test, never by a tolerance) and its coordinates are
@@ -50,7 +48,8 @@ class Voronoi:
       point_region (input point -> its entry of regions: here the identity),
       ridge_points (r, 2), ridge_vertices (list of [v, w], -1 for a point at infinity)
     exidel's own:
-      vertex_sites   per vertex, every site exactly equidistant, counter-clockwise
+      vertex_sites   per vertex, every site exactly equidistant, counter-clockwise (a
+                     list of lists of ints, as regions)
       unbounded      (n,) bool
       entry_ray, exit_ray  (n, 2): an unbounded cell comes in from infinity along
                      -entry_ray into its first vertex and leaves along exit_ray from its
@@ -64,13 +63,15 @@ class Voronoi:
 
     ndim = 2
 
-    def __init__(self, points, kernel="adaptive", algorithm="external", threads=1):
+    def __init__(self, points, kernel="adaptive", algorithm="external", threads=None):
         self.points = np.ascontiguousarray(points, dtype=np.float64)
+        threads = default_threads() if threads is None else threads
         self._data = _core.VoronoiData(self.points, kernel, algorithm, threads)
         failure = self._data.failure()
         if failure is not None:
             raise TriangulationError(*failure)
         d = self._data.arrays()
+        self._arrays = d
         self.vertices = d["vertices"]
         self.unbounded = d["unbounded"]
         self.entry_ray = d["entry_ray"]
@@ -81,18 +82,48 @@ class Voronoi:
         self.simplices = d["triangles"]
         self.halfedges = d["halfedges"]
         self.stats = d["stats"]
-        self.vertex_sites = _split(d["site_offsets"], d["sites"])
-        cells = _split(d["cell_offsets"], d["cell_vertices"])
-        self.regions = [list(c) + ([-1] if u else []) for c, u in zip(cells, self.unbounded)]
         self.point_region = np.arange(self.points.shape[0], dtype=np.int32)
-        self._ridges(d["vertex_of_input"])
+        # The list-of-lists attributes (regions, vertex_sites, ridge_vertices) are built on
+        # first use: Python lists of 10^5 cells cost more than the diagram itself.
+        self._lists = {}
 
-    def _ridges(self, vertex_of_input):
+    def _cached(self, name, build):
+        if name not in self._lists:
+            # Millions of new lists and ints would run the cyclic collector over and over
+            # (half the time of building them); none of them can form a cycle.
+            enabled = gc.isenabled()
+            gc.disable()
+            try:
+                self._lists[name] = build()
+            finally:
+                if enabled:
+                    gc.enable()
+        return self._lists[name]
+
+    @property
+    def regions(self):
+        d = self._arrays
+        return self._cached("regions", lambda: _core.split_lists(
+            d["cell_offsets"], d["cell_vertices"], self.unbounded))
+
+    @property
+    def vertex_sites(self):
+        d = self._arrays
+        return self._cached("vertex_sites", lambda: _core.split_lists(d["site_offsets"], d["sites"]))
+
+    @property
+    def ridge_points(self):
+        return self._cached("ridges", self._ridges)[0]
+
+    @property
+    def ridge_vertices(self):
+        return self._cached("ridges", self._ridges)[1]
+
+    def _ridges(self):
         if self.collinear:
             # Consecutive sites along the line are separated by a whole bisector line.
-            self.ridge_points = np.stack([self.chain[:-1], self.chain[1:]], axis=1).astype(np.int32)
-            self.ridge_vertices = [[-1, -1] for _ in range(len(self.ridge_points))]
-            return
+            points = np.stack([self.chain[:-1], self.chain[1:]], axis=1).astype(np.int32)
+            return points, [[-1, -1] for _ in range(len(points))]
         flat = self.simplices.reshape(-1)
         e = np.arange(flat.size)
         nxt = np.where(e % 3 == 2, e - 2, e + 1)
@@ -103,10 +134,10 @@ class Voronoi:
         keep = (twin < e)
         keep &= (twin < 0) | (self.vertex_of_triangle[e // 3] != self.vertex_of_triangle[np.maximum(twin, 0) // 3])
         e = e[keep]
-        self.ridge_points = np.stack([flat[e], flat[nxt[e]]], axis=1).astype(np.int32)
+        points = np.stack([flat[e], flat[nxt[e]]], axis=1).astype(np.int32)
         v = self.vertex_of_triangle[e // 3].astype(np.int64)
         w = np.where(twin[e] < 0, -1, self.vertex_of_triangle[np.maximum(twin[e], 0) // 3])
-        self.ridge_vertices = np.stack([w, v], axis=1).tolist()
+        return points, np.stack([w, v], axis=1).tolist()
 
     @property
     def npoints(self):

@@ -200,3 +200,38 @@ def test_certify_finds_what_is_wrong(rng):
 def test_scipy_output_can_be_certified(rng):
     pts = rng.random((1000, 2))
     assert exidel.certify(pts, scipy.spatial.Delaunay(pts).simplices).ok
+
+
+def test_certify_takes_every_producers_layout_and_types_its_findings(rng):
+    pts = rng.random((500, 2))
+    pts = np.vstack([pts, pts[:20]])  # later copies of 20 points
+    tri = exidel.Delaunay(pts)
+    s = scipy.spatial.Delaunay(pts)
+    # The scipy object itself, its simplices, delaunator's arrays (clockwise, a later copy,
+    # the hull clockwise from elsewhere), exidel's own result: all certified.
+    later = np.arange(len(pts))
+    later[:20] = np.arange(500, 520)
+    cw = later[tri.simplices[:, ::-1]]
+    delaunator = {"triangles": cw.reshape(-1), "hull": np.roll(later[tri.hull[::-1]], 3)}
+    for given in (s, s.simplices, delaunator, tri):
+        cert = exidel.certify(pts, given)
+        assert cert.ok, (type(given), cert)
+    notes = exidel.certify(pts, delaunator).notes
+    assert any("clockwise triangles turned" in n for n in notes), notes
+    assert any("later copy" in n for n in notes), notes
+    assert exidel.certify(pts, tri).notes == []
+    # Typed, located findings: a clockwise triangle under reorient=False.
+    bad = exidel.certify(pts, tri.simplices[:, ::-1], reorient=False)
+    f = bad.findings[0]
+    assert isinstance(f, exidel.Finding) and f.kind == "not_ccw"
+    assert f.triangle == 0 and f.points == tuple(int(v) for v in tri.simplices[0, ::-1])
+    assert f.message == f"triangle 0 ({', '.join(map(str, f.points))}) is clockwise"
+    assert str(f).startswith("not_ccw: triangle 0 (")
+    assert len(bad.findings) == 64 and bad.total_findings > 64
+    every = exidel.certify(pts, tri.simplices[:, ::-1], reorient=False, all=True)
+    assert len(every.findings) == every.total_findings == bad.total_findings
+    # The plot accepts what certify accepts.
+    pytest.importorskip("matplotlib")
+    from exidel import plot
+    plot.certificate(pts, s)
+    plot.certificate(pts, delaunator)

@@ -135,7 +135,7 @@ def test_every_algorithm_gives_the_same_diagram(algorithm):
     # The same diagram up to the numbering of the vertices (by first triangle, and the
     # algorithms number triangles differently): each vertex with its sites, each cell.
     def canonical(d):
-        vertices = {tuple(d.vertices[k]): tuple(sorted(d.vertex_sites[k].tolist()))
+        vertices = {tuple(d.vertices[k]): tuple(sorted(d.vertex_sites[k]))
                     for k in range(len(d.vertices))}
         cells = [frozenset(tuple(d.vertices[k]) if k >= 0 else None for k in r) for r in d.regions]
         return vertices, cells
@@ -154,3 +154,15 @@ def test_circumcenter_rows(rng):
     assert one.tolist() == [1.0, 1.0] and int(st) == 0
     _, st = exidel.circumcenter([[0, 0]], [1, 1], [2, 2])
     assert exidel.circumcenter_statuses[st[0]] == "collinear"
+
+
+def test_list_attributes_are_lists_of_ints_built_once():
+    pts = np.random.default_rng(8).random((300, 2))
+    v = exidel.Voronoi(pts)
+    assert v.regions is v.regions and v.ridge_vertices is v.ridge_vertices
+    assert all(type(i) is int for r in v.regions for i in r)
+    assert all(type(i) is int for s in v.vertex_sites for i in s)
+    assert [r[-1] == -1 for r in v.regions] == [bool(u) for u in v.unbounded]
+    assert all(len(s) >= 3 for s in v.vertex_sites)
+    c = v.clip(0, 0, 1, 1)
+    assert all(type(i) is int for r in c.regions for i in r)

@@ -29,7 +29,8 @@ std::vector<std::string> Normalization::notes() const {
     if (twins_derived) n.push_back("no halfedges given: twins matched from the triangles");
     if (hull_derived) n.push_back("no hull given: the boundary cycle is taken as the hull");
     if (hull_reversed) n.push_back("the hull ran clockwise (or backwards): reversed");
-    if (hull_rotated) n.push_back("the hull started elsewhere: rotated to start at its smallest point");
+    if (hull_rotated)
+        n.push_back("the hull started elsewhere: rotated to start at its smallest point");
     return n;
 }
 
@@ -146,7 +147,8 @@ Triangulation normalize(std::span<const Point2> points, ProducedTriangulation pr
             t.hull = std::move(chain);
             did.hull_derived = true;
         } else {
-            if (!strict && hull != chain && std::equal(hull.rbegin(), hull.rend(), chain.begin(), chain.end())) {
+            if (!strict && hull != chain &&
+                std::equal(hull.rbegin(), hull.rend(), chain.begin(), chain.end())) {
                 std::reverse(hull.begin(), hull.end());
                 did.hull_reversed = true;
             }
@@ -211,7 +213,8 @@ Triangulation normalize(std::span<const Point2> points, ProducedTriangulation pr
                 j = static_cast<std::size_t>(smallest() - hull.begin());
             }
             if (j != 0) {
-                std::rotate(hull.begin(), hull.begin() + static_cast<std::ptrdiff_t>(j), hull.end());
+                std::rotate(hull.begin(), hull.begin() + static_cast<std::ptrdiff_t>(j),
+                            hull.end());
                 did.hull_rotated = true;
             }
         }

@@ -81,7 +81,8 @@ ProducedTriangulation parse_json(std::string_view text, std::span<const Point2> 
                 j.expect('[', "to open a triangle [i, j, k]");
                 for (int k = 0; k < 3; ++k) {
                     if (k) j.expect(',', "between a triangle's vertices (three of them)");
-                    p.triangles.push_back(static_cast<std::uint32_t>(j.integer("vertex", 0, max_u32)));
+                    p.triangles.push_back(
+                        static_cast<std::uint32_t>(j.integer("vertex", 0, max_u32)));
                 }
                 j.expect(']', "after a triangle's three vertices");
             } while (j.accept(','));
@@ -159,7 +160,8 @@ ProducedTriangulation parse_ele(std::string_view text, std::size_t point_count) 
                 }
                 expected = whole(number, fields[0], "number of triangles", 0, max_i32 / 3);
                 whole(number, fields[1], "nodes per triangle (only 3 is supported)", 3, 3);
-                if (fields.size() == 3) attributes = whole(number, fields[2], "attributes", 0, 1 << 20);
+                if (fields.size() == 3)
+                    attributes = whole(number, fields[2], "attributes", 0, 1 << 20);
                 have_header = true;
                 p.triangles.reserve(3 * std::min(expected, text.size() / 8));
                 return;
@@ -235,72 +237,72 @@ ProducedTriangulation parse_off(std::string_view text, std::span<const Point2> p
     std::size_t nv = 0, nf = 0, v = 0, f = 0;
     std::vector<std::uint32_t> input_of;  // OFF vertex -> input index
     std::vector<std::string_view> fields;
-    const std::size_t lines =
-        detail::for_each_line(text, [&](std::size_t number, std::string_view line) {
-            split_fields(line, fields);
-            if (fields.empty()) return;
-            if (state == magic) {
-                if (fields[0] != "OFF") {
-                    throw ReadError::at_line(number, "an OFF file starts with \"OFF\", found " +
-                                                         quoted(fields[0]));
-                }
-                fields.erase(fields.begin());
-                state = counts;
-                if (fields.empty()) return;  // the counts on the next line
+    const std::size_t lines = detail::for_each_line(text, [&](std::size_t number,
+                                                              std::string_view line) {
+        split_fields(line, fields);
+        if (fields.empty()) return;
+        if (state == magic) {
+            if (fields[0] != "OFF") {
+                throw ReadError::at_line(
+                    number, "an OFF file starts with \"OFF\", found " + quoted(fields[0]));
             }
-            if (state == counts) {
-                if (fields.size() != 3 && fields.size() != 2) {
-                    throw ReadError::at_line(number, "expected \"nvertices nfaces nedges\"");
-                }
-                nv = whole(number, fields[0], "number of vertices", 0, max_u32);
-                nf = whole(number, fields[1], "number of faces", 0, max_i32 / 3);
-                input_of.reserve(std::min(nv, text.size() / 4));
-                p.triangles.reserve(3 * std::min(nf, text.size() / 8));
-                state = nv ? vertices : nf ? faces : done;
-                return;
+            fields.erase(fields.begin());
+            state = counts;
+            if (fields.empty()) return;  // the counts on the next line
+        }
+        if (state == counts) {
+            if (fields.size() != 3 && fields.size() != 2) {
+                throw ReadError::at_line(number, "expected \"nvertices nfaces nedges\"");
             }
-            if (state == vertices) {
-                if (fields.size() != 2 && fields.size() != 3) {
-                    throw ReadError::at_line(number, "a vertex line is \"x y [z]\", got " +
-                                                         std::to_string(fields.size()) + " fields");
-                }
-                double c[3] = {0, 0, 0};
-                for (std::size_t k = 0; k < fields.size(); ++k) {
-                    const ParsedNumber d = parse_double(fields[k]);
-                    if (!d.value) throw ReadError::at_line(number, "vertex coordinate: " + d.error);
-                    c[k] = *d.value;
-                }
-                const std::optional<std::uint32_t> i = index.find({c[0], c[1]});
-                if (!i) {
-                    throw ReadError::at_line(
-                        number, "vertex " + std::to_string(v) + " (" + std::string(fields[0]) + " " +
-                                    std::string(fields[1]) +
-                                    ") is not one of the input points (coordinates must "
-                                    "read back exactly: write 17 significant digits)");
-                }
-                input_of.push_back(*i);
-                if (++v == nv) state = nf ? faces : done;
-                return;
+            nv = whole(number, fields[0], "number of vertices", 0, max_u32);
+            nf = whole(number, fields[1], "number of faces", 0, max_i32 / 3);
+            input_of.reserve(std::min(nv, text.size() / 4));
+            p.triangles.reserve(3 * std::min(nf, text.size() / 8));
+            state = nv ? vertices : nf ? faces : done;
+            return;
+        }
+        if (state == vertices) {
+            if (fields.size() != 2 && fields.size() != 3) {
+                throw ReadError::at_line(number, "a vertex line is \"x y [z]\", got " +
+                                                     std::to_string(fields.size()) + " fields");
             }
-            if (state == faces) {
-                const std::size_t k = whole(number, fields[0], "vertices of a face", 3, max_u32);
-                if (k != 3) {
-                    throw ReadError::at_line(number, "face " + std::to_string(f) + " has " +
-                                                         std::to_string(k) +
-                                                         " vertices: a triangulation has 3");
-                }
-                if (fields.size() < 4) throw ReadError::at_line(number, "a face line is \"3 a b c\"");
-                if (nv == 0) throw ReadError::at_line(number, "a face, but no vertices");
-                for (std::size_t j = 1; j <= 3; ++j) {
-                    p.triangles.push_back(input_of[whole(number, fields[j], "face vertex", 0, nv - 1)]);
-                }
-                if (++f == nf) state = done;
-                return;
+            double c[3] = {0, 0, 0};
+            for (std::size_t k = 0; k < fields.size(); ++k) {
+                const ParsedNumber d = parse_double(fields[k]);
+                if (!d.value) throw ReadError::at_line(number, "vertex coordinate: " + d.error);
+                c[k] = *d.value;
             }
-            throw ReadError::at_line(number, "more lines than the " + std::to_string(nv) +
-                                                 " vertices and " + std::to_string(nf) +
-                                                 " faces the header announces");
-        });
+            const std::optional<std::uint32_t> i = index.find({c[0], c[1]});
+            if (!i) {
+                throw ReadError::at_line(
+                    number, "vertex " + std::to_string(v) + " (" + std::string(fields[0]) + " " +
+                                std::string(fields[1]) +
+                                ") is not one of the input points (coordinates must "
+                                "read back exactly: write 17 significant digits)");
+            }
+            input_of.push_back(*i);
+            if (++v == nv) state = nf ? faces : done;
+            return;
+        }
+        if (state == faces) {
+            const std::size_t k = whole(number, fields[0], "vertices of a face", 3, max_u32);
+            if (k != 3) {
+                throw ReadError::at_line(number, "face " + std::to_string(f) + " has " +
+                                                     std::to_string(k) +
+                                                     " vertices: a triangulation has 3");
+            }
+            if (fields.size() < 4) throw ReadError::at_line(number, "a face line is \"3 a b c\"");
+            if (nv == 0) throw ReadError::at_line(number, "a face, but no vertices");
+            for (std::size_t j = 1; j <= 3; ++j) {
+                p.triangles.push_back(input_of[whole(number, fields[j], "face vertex", 0, nv - 1)]);
+            }
+            if (++f == nf) state = done;
+            return;
+        }
+        throw ReadError::at_line(number, "more lines than the " + std::to_string(nv) +
+                                             " vertices and " + std::to_string(nf) +
+                                             " faces the header announces");
+    });
     if (state == magic) throw ReadError::at_line(1, "empty OFF file");
     if (state != done) {
         throw ReadError::at_line(std::max<std::size_t>(lines, 1),
@@ -322,7 +324,8 @@ ProducedTriangulation parse_simplices(std::string_view text) {
                                                  std::to_string(fields.size()) + " fields");
         }
         for (const std::string_view field : fields) {
-            p.triangles.push_back(static_cast<std::uint32_t>(whole(number, field, "vertex", 0, max_u32)));
+            p.triangles.push_back(
+                static_cast<std::uint32_t>(whole(number, field, "vertex", 0, max_u32)));
         }
     });
     return p;

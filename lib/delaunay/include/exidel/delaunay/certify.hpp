@@ -116,11 +116,11 @@ struct Normalization {
 
 /// `produced` in certify()'s layout:
 ///   - every vertex (triangles, hull) naming a repeated point names its first occurrence;
-///   - a clockwise triangle (a, b, c) becomes (a, c, b); its given twins follow (the
-///     half-edge k of the old triangle is the half-edge 2 - k of the new one), so a
-///     triangle that was clockwise among counter-clockwise neighbours still shows: its
-///     twins then run the same way as theirs (twin_mismatch). Degenerate triangles
-///     (collinear or repeating a vertex) are left as they are;
+///   - a clockwise triangle (a, b, c) becomes (a, c, b), triangle by triangle (the
+///     orientation of a row is a convention: qhull mixes both); its given twins follow
+///     (half-edge k of the old triangle is half-edge 2 - k of the new one), so twins that
+///     do not match the triangles are still found. Flat triangles (collinear vertices)
+///     are left as they are, for the certifier to report;
 ///   - absent twins are matched from the triangles (an edge used twice in one direction
 ///     stays unmatched); an absent hull is the boundary cycle from the lexicographically
 ///     smallest boundary vertex;

@@ -33,6 +33,7 @@
 #include <string_view>
 
 #include "exidel/delaunay/certify.hpp"
+#include "exidel/io/points.hpp"  // ReadError
 #include "exidel/predicates/types.hpp"
 
 namespace exidel::io {
