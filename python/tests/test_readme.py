@@ -33,3 +33,16 @@ def test_quickstart_runs(tmp_path):
     m = re.search(r"double wrong on (\d+) of 256", r.stdout)
     assert m and int(m.group(1)) > 0
     assert (tmp_path / "exidel-quickstart.png").stat().st_size > 1000
+
+
+def test_certify_scipy_example_runs(tmp_path):
+    # README's measured sentence comes from this script at its default size; here a small
+    # survey: exidel's triangulation certifies, and scipy's is judged (its count is
+    # scipy's, whatever the version).
+    r = subprocess.run([sys.executable, str(ROOT / "python/examples/certify_scipy.py"), "20000"],
+                       cwd=tmp_path, capture_output=True, text=True, check=True)
+    lines = r.stdout.splitlines()
+    assert lines[0].startswith("scipy: 19881 points, certified: ")
+    assert lines[2] == "exidel: 19881 points, certified: True, findings: none"
+    text = (ROOT / "README.md").read_text()
+    assert "python3 python/examples/certify_scipy.py" in text
