@@ -26,12 +26,12 @@ struct Value {
     bool boolean = false;
     std::string_view number;  // the number's text
     std::string string;
-    std::vector<Value> items;
-    std::vector<std::pair<std::string, Value>> members;
+    std::vector<Value> items;       // an array's; an object's member values
+    std::vector<std::string> keys;  // an object's member names, one per item
 
     const Value* member(std::string_view key) const {
-        for (const auto& [k, v] : members) {
-            if (k == key) return &v;
+        for (std::size_t k = 0; k < keys.size(); ++k) {
+            if (keys[k] == key) return &items[k];
         }
         return nullptr;
     }
@@ -116,7 +116,8 @@ private:
                 if (i_ >= s_.size() || s_[i_] != ':')
                     fail("expected ':' after a key, found " + found());
                 ++i_;
-                v.members.emplace_back(std::move(key), value(depth + 1));
+                v.keys.push_back(std::move(key));
+                v.items.push_back(value(depth + 1));
                 space();
                 if (i_ < s_.size() && s_[i_] == ',') {
                     ++i_;
