@@ -19,7 +19,8 @@ is --input-format, else the file's extension (.json json, .node node, .f64 f64,
         the first line may be a header of names ("x,y"), which is skipped; fields
         may be quoted ("x","y"); a UTF-8 byte order mark is skipped. Wider CSV:
         --columns X,Y picks the two fields by number (from 1) or header name;
-        --columns X,Y,Z also keeps a third as z (a finite number)
+        --columns X,Y,Z also reads a third as z (a finite number; triangulate
+        writes it, voronoi ignores it)
   json  [[x, y], [x, y], ...]
   node  Triangle's .node: "n 2 attributes markers", then "index x y [...]" lines
         (0- or 1-based); attributes and markers are checked and ignored
@@ -27,7 +28,8 @@ is --input-format, else the file's extension (.json json, .node node, .f64 f64,
   geojson  RFC 7946 FeatureCollection, Feature or geometry of Point and MultiPoint
         (GeometryCollections of them too); a feature with a null geometry is
         skipped, other geometry types are an error naming the feature; z is the
-        positions' third coordinate (all or none), or --z-property NAME's value
+        positions' third coordinate (all or none), or with triangulate's
+        --z-property NAME that property's value
 Text coordinates are decimal or C99 hex floats (0x1.8p-3; json: decimal only),
 )";
 
