@@ -13,16 +13,23 @@ namespace exidel::cli {
 
 const std::string_view point_input_help =
     R"(Input (-i FILE or FILE, or standard input when no file or '-' is given). The format
-is --input-format, else the file's extension (.json json, .node node, .f64 f64),
-else xy:
+is --input-format, else the file's extension (.json json, .node node, .f64 f64,
+.geojson geojson), else xy:
   xy    one point per line, "x y" or "x,y" (.txt .xy .csv); '#' starts a comment;
         the first line may be a header of names ("x,y"), which is skipped; fields
         may be quoted ("x","y"); a UTF-8 byte order mark is skipped. Wider CSV:
-        --columns X,Y picks the two fields by number (from 1) or header name
+        --columns X,Y picks the two fields by number (from 1) or header name;
+        --columns X,Y,Z also reads a third as z (a finite number; triangulate
+        writes it, voronoi ignores it)
   json  [[x, y], [x, y], ...]
   node  Triangle's .node: "n 2 attributes markers", then "index x y [...]" lines
         (0- or 1-based); attributes and markers are checked and ignored
   f64   raw little-endian float64 pairs x0 y0 x1 y1 ...
+  geojson  RFC 7946 FeatureCollection, Feature or geometry of Point and MultiPoint
+        (GeometryCollections of them too); a feature with a null geometry is
+        skipped, other geometry types are an error naming the feature; z is the
+        positions' third coordinate (all or none), or with triangulate's
+        --z-property NAME that property's value
 Text coordinates are decimal or C99 hex floats (0x1.8p-3; json: decimal only),
 )";
 
@@ -63,6 +70,13 @@ void PointInput::add_format_options(CLI::App& app) {
     add_columns_option(app, columns);
 }
 
+void PointInput::add_z_property_option(CLI::App& app) {
+    app.add_option_function<std::string>("--z-property", [this](const std::string& name) {
+        if (name.empty()) throw std::invalid_argument("--z-property needs a property name");
+        z_property = name;
+    });
+}
+
 std::optional<std::string> PointInput::take_files() {
     if (input_option_->count() + files_.size() > 1) return "more than one input file given";
     if (!files_.empty()) path = files_.front();
@@ -75,13 +89,17 @@ io::PointFormat PointInput::resolved_format() const {
 }
 
 std::optional<std::string> PointInput::columns_error() const {
+    if (z_property && resolved_format() != io::PointFormat::geojson) {
+        return "--z-property applies to geojson input, not to " +
+               std::string(io::to_string(resolved_format()));
+    }
     return cli::columns_error(columns, resolved_format());
 }
 
 std::optional<io::PointFile> PointInput::read(unsigned threads, Progress& progress) const {
     progress.phase(from_stdin() ? "reading standard input" : "reading '" + *path + "'");
     try {
-        const io::ReadOptions options{columns, threads};
+        const io::ReadOptions options{columns, threads, z_property};
         if (from_stdin()) return io::read_point_file(std::cin, resolved_format(), options);
         const io::FileBytes bytes(*path);
         return io::parse_point_file(bytes.view(), resolved_format(), options);

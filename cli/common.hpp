@@ -58,6 +58,7 @@ struct PointInput {
     std::optional<std::string> path;
     std::optional<io::PointFormat> format;
     std::optional<io::Columns> columns;
+    std::optional<std::string> z_property;
 
     PointInput() = default;
     PointInput(const PointInput&) = delete;  // the options' callbacks hold its address
@@ -67,13 +68,16 @@ struct PointInput {
     void add_file_options(CLI::App& app);
     /// Declares --input-format and --columns on `app`.
     void add_format_options(CLI::App& app);
+    /// Declares --z-property NAME on `app` (geojson input: z from that property).
+    void add_z_property_option(CLI::App& app);
     /// After parsing: the usage error of more than one input file, if given.
     std::optional<std::string> take_files();
 
     bool from_stdin() const { return !path || *path == "-"; }
     /// --input-format, else from the extension, else xy.
     io::PointFormat resolved_format() const;
-    /// The usage error of --columns with a format other than xy, if given.
+    /// The usage error of --columns with a format other than xy, or --z-property with
+    /// one other than geojson, if given.
     std::optional<std::string> columns_error() const;
     /// Reads every point (showing the phase on `progress`). When the input cannot be read
     /// or is malformed: "exidel: <why>" on standard error, progress stopped, nothing.

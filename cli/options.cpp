@@ -62,7 +62,8 @@ int CommandLine::usage_error(const std::string& message) const {
 }
 
 void add_point_format_option(CLI::App& app, std::optional<io::PointFormat>& target) {
-    add_parsed(app, "--input-format", "xy, json, node or f64", target, io::point_format_from_name);
+    add_parsed(app, "--input-format", "xy, json, node, f64 or geojson", target,
+               io::point_format_from_name);
 }
 
 void add_columns_option(CLI::App& app, std::optional<io::Columns>& target) {

@@ -61,9 +61,9 @@ void add_parsed(CLI::App& app, const std::string& names, const std::string& expe
     });
 }
 
-/// --input-format xy|json|node|f64: the format of a point file.
+/// --input-format xy|json|node|f64|geojson: the format of a point file.
 void add_point_format_option(CLI::App& app, std::optional<io::PointFormat>& target);
-/// --columns X,Y: the two fields of a wider xy file that hold x and y.
+/// --columns X,Y[,Z]: the fields of a wider xy file that hold x and y (and z).
 void add_columns_option(CLI::App& app, std::optional<io::Columns>& target);
 /// The usage error of --columns with a point format other than xy, if given.
 std::optional<std::string> columns_error(const std::optional<io::Columns>& columns,

@@ -36,8 +36,10 @@ namespace {
 
 constexpr std::string_view triangulate_help_head =
     R"(usage: exidel triangulate [-i FILE] [-o FILE] [--kernel NAME] [--algorithm NAME]
-                          [--incircle determinant|cosine] [--format json|ele|off|svg]
-                          [--input-format xy|json|node|f64] [--columns X,Y]
+                          [--incircle determinant|cosine]
+                          [--format json|ele|off|svg|geojson|wkt|ply|ply-ascii]
+                          [--input-format xy|json|node|f64|geojson] [--columns X,Y[,Z]]
+                          [--z-property NAME]
                           [--order auto|lexicographic|radial|strips] [--threads N]
                           [--strip-points N] [--strip-tiles N] [--certify] [--stats]
                           [--quiet] [FILE]
@@ -64,8 +66,12 @@ constexpr std::string_view triangulate_help_tail =
 out of the triangulation and listed. An empty input is 0 points.
 
 Output (-o FILE, or standard output). The format is --format, else the extension of
--o (.json .ele .off .svg; another extension is an error), else json. Indices are
-input indices, 0-based (ele: counted like the input .node, from 0 or 1).
+-o (.json .ele .off .svg .geojson .wkt .ply; another extension is an error), else
+json. Indices are input indices, 0-based (ele: counted like the input .node, from 0
+or 1). Coordinates are written as the shortest decimals that read back as the same
+doubles. z (from --columns X,Y,Z or geojson input) goes into off, geojson, wkt and
+ply. Longitude and latitude are triangulated as a plane (no antimeridian or pole
+handling).
   json  {"triangles": [...], "halfedges": [...], "hull": [...], "duplicates": [...]}
         delaunator's arrays: triangles counter-clockwise, halfedges -1 on the
         boundary, hull counter-clockwise from the lexicographically smallest point
@@ -73,8 +79,22 @@ input indices, 0-based (ele: counted like the input .node, from 0 or 1).
   ele   Triangle's .ele: "ntriangles 3 0", then "t v0 v1 v2"; -o FILE.ele also
         writes the points as FILE.node beside it (Triangle's pair, same numbering)
         unless FILE.node is the input itself
-  off   OFF with z = 0 (every input point is a vertex, duplicates included)
-  svg   a picture: triangles, hull in red, points; y up (opens at 10^6 points)
+  off   OFF with the input's z, else z = 0 (every input point is a vertex,
+        duplicates included)
+  svg   a picture: triangles, hull in red, points; in the data's coordinates (the
+        viewBox is the points' bounding box, y flipped by a scale(1,-1) group) so
+        that it overlays other data; strokes keep their pixel width at any scale;
+        opens at 10^6 points
+  geojson  RFC 7946 FeatureCollection: Feature t is triangle t, a Polygon
+        (counter-clockwise, closed) with properties {"triangle": t, "vertices":
+        [i, j, k]}; then one Feature {"hull": true, "vertices": [...]}: the hull's
+        Polygon, or for input without triangles a LineString of the distinct points
+        (a Point for one; none for no points). Positions [x, y] or [x, y, z]
+  wkt   one MULTIPOLYGON (MULTIPOLYGON Z with z), polygon t being triangle t;
+        MULTIPOLYGON EMPTY without triangles
+  ply   binary little-endian PLY (ply-ascii: ASCII PLY): vertices double x, y, z
+        (z = 0 without z; every input point, duplicates included), faces "list uchar
+        int vertex_indices"
 
 Options:
   -i, --input FILE        read points from FILE ('-' for standard input)
@@ -98,10 +118,13 @@ Options:
       --strip-tiles N     cut each strip across into N tiles of --strip-points
                           points (strips of N times as many); 1: plain strips;
                           default: chosen by input size
-  -f, --format FORMAT     json|ele|off|svg
-      --input-format FMT  xy|json|node|f64
-      --columns X,Y       xy input: the fields holding x and y, by number from 1
-                          ("3,4") or by header name ("lon,lat")
+  -f, --format FORMAT     json|ele|off|svg|geojson|wkt|ply|ply-ascii
+      --input-format FMT  xy|json|node|f64|geojson
+      --columns X,Y[,Z]   xy input: the fields holding x and y, and z if a third is
+                          given, by number from 1 ("3,4,5") or by header name
+                          ("lon,lat,height")
+      --z-property NAME   geojson input: z is the feature's property NAME (a
+                          number) instead of the position's third coordinate
       --certify           check the result with exact predicates before writing it
                           (exidel certify's checks); a finding is an error: exit
                           status 1, findings on standard error, no output written
@@ -222,9 +245,9 @@ int run(const Options& o, const CommandLine& cli) {
     std::string error;
     const std::optional<AnyKernel> kernel = o.checked_kernel(error);
     if (!kernel) return cli.usage_error(error);
-    const std::optional<io::TriangulationFormat> format =
-        output_format(o.format, o.output, io::TriangulationFormat::json,
-                      io::triangulation_format_from_path, ".json .ele .off .svg", error);
+    const std::optional<io::TriangulationFormat> format = output_format(
+        o.format, o.output, io::TriangulationFormat::json, io::triangulation_format_from_path,
+        ".json .ele .off .svg .geojson .wkt .ply", error);
     if (!format) return cli.usage_error(error);
 
     // The output files exist (as temporaries) from here on, removed again on any failure.
@@ -280,7 +303,7 @@ int run(const Options& o, const CommandLine& cli) {
         }
     }
 
-    const io::WriteOptions write_options{input->index_base, o.threads};
+    const io::WriteOptions write_options{input->index_base, o.threads, input->z};
     std::vector<BesideFile> beside;
     if (node_output) {
         beside.push_back({*node_output, [&](std::ostream& out) {
@@ -341,9 +364,10 @@ int triangulate_command(std::span<const std::string_view> args) {
                "a whole number from 1 to " + std::to_string(delaunay::detail::max_points),
                o.strip_tiles,
                [](const std::string& v) { return whole_number(v, delaunay::detail::max_points); });
-    add_parsed(app, "-f,--format", "json, ele, off or svg", o.format,
+    add_parsed(app, "-f,--format", "json, ele, off, svg, geojson, wkt, ply or ply-ascii", o.format,
                io::triangulation_format_from_name);
     o.input.add_format_options(app);
+    o.input.add_z_property_option(app);
     app.add_flag("--certify", o.certify);
     o.add_report_options(app);
     if (const std::optional<int> status = o.parse(cli, args)) return *status;

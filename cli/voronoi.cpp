@@ -31,8 +31,9 @@ namespace {
 
 constexpr std::string_view voronoi_help_head =
     R"(usage: exidel voronoi [-i FILE] [-o FILE] [--kernel NAME] [--algorithm NAME]
-                      [--format json|svg] [--clip XMIN YMIN XMAX YMAX]
-                      [--input-format xy|json|node|f64] [--columns X,Y]
+                      [--format json|svg|geojson|wkt]
+                      [--clip XMIN YMIN XMAX YMAX | --unclipped]
+                      [--input-format xy|json|node|f64|geojson] [--columns X,Y]
                       [--threads N] [--stats] [--quiet] [FILE]
 
 Computes the Voronoi diagram of a set of points from their Delaunay triangulation
@@ -40,8 +41,10 @@ Computes the Voronoi diagram of a set of points from their Delaunay triangulatio
 set of cocircular Delaunay triangles, decided by the kernel's in-circle test (exact
 with an exact kernel, never a tolerance), so that four or more cocircular points
 give one vertex, not several a rounding apart; its coordinates are the doubles
-nearest to the exact centre. --clip cuts every cell to a box (in exact rationals),
-so that every cell is a polygon.
+nearest to the exact centre. The diagram is clipped to a box (in exact rationals),
+so that every cell is a polygon: by default the sites' bounding box widened by 10%
+of its larger side on every side (1 unit for a single point), or --clip's box;
+--unclipped writes the whole diagram instead (json and svg only).
 
 )";
 
@@ -50,8 +53,10 @@ constexpr std::string_view voronoi_help_tail =
 its twin's cell. An empty input is 0 points.
 
 Output (-o FILE, or standard output). The format is --format, else the extension of
--o (.json .svg; another extension is an error), else json. Sites are input indices,
-0-based.
+-o (.json .svg .geojson .wkt; another extension is an error), else json. Sites are
+input indices, 0-based. Coordinates are the shortest decimals that read back as the
+same doubles. Longitude and latitude are taken as a plane (no antimeridian or pole
+handling).
   json  {"vertices": [[x, y], ...], "vertex_sites": [[i, j, k, ...], ...],
          "cells": [[v, ...], ...], "unbounded": [bool, ...]}, one key per line:
           vertices      every coordinate the shortest decimal that reads back as
@@ -62,16 +67,25 @@ Output (-o FILE, or standard output). The format is --format, else the extension
           cells         for every input index, the indices of its cell's vertices,
                         counter-clockwise (a duplicate repeats its twin's cell)
           unbounded     for every input index, whether its cell is unbounded
-        Input on one line (or of fewer than three distinct points) has no vertices
-        and empty cells: the cells are strips between parallel bisectors. With
-        --clip every cell is its polygon inside the box, possibly empty; the Voronoi
-        vertices in the box come first, then the points the box adds (where an
-        edge leaves the box, and its corners), their sites the one or two sites
-        whose cells have them as a corner; "unbounded" is the unclipped cell's
-  svg   a picture, y up: the Voronoi edges, the rays of unbounded cells to the
-        picture's edge (the bisectors for input on one line), the vertices (merged
-        cocircular ones, of four or more sites, ringed in orange) and the sites.
-        It spans the sites and the vertices; with --clip, the box
+        Clipped (the default), every cell is its polygon inside the box, possibly
+        empty (with --clip); the Voronoi vertices in the box come first, then the
+        points the box adds (where an edge leaves the box, and its corners), their
+        sites the one or two sites whose cells have them as a corner; "unbounded"
+        is the unclipped cell's. With --unclipped, input on one line (or of fewer
+        than three distinct points) has no vertices and empty cells: the cells are
+        strips between parallel bisectors
+  svg   a picture in the data's coordinates (the viewBox is the box in input
+        units, y flipped by a scale(1,-1) group): the Voronoi edges, the box, the
+        vertices (merged cocircular ones, of four or more sites, on orange discs)
+        and the sites inside the box. With --unclipped it spans the sites and the
+        vertices, and draws the rays of unbounded cells to its edge (the bisectors
+        for input on one line)
+  geojson  RFC 7946 FeatureCollection with the box as "bbox": feature i is site
+        i, properties {"site": i}, geometry the Polygon of its clipped cell
+        (counter-clockwise, closed), or null when the cell misses the box; a
+        duplicate has its twin's polygon
+  wkt   one GEOMETRYCOLLECTION of one POLYGON per site, in input order (POLYGON
+        EMPTY when the cell misses the box)
 
 Options:
   -i, --input FILE        read points from FILE ('-' for standard input)
@@ -87,11 +101,13 @@ Options:
   -a, --algorithm NAME    one of the algorithms listed at the end (default: external)
       --threads N         threads for reading and triangulating (default: the
                           hardware's thread count); the output does not depend on it
-  -f, --format FORMAT     json|svg
+  -f, --format FORMAT     json|svg|geojson|wkt
       --clip XMIN YMIN XMAX YMAX
-                          clip the diagram to this box: four finite numbers with
-                          XMIN < XMAX and YMIN < YMAX (decimal or hex floats)
-      --input-format FMT  xy|json|node|f64
+                          clip the diagram to this box instead of the default one:
+                          four finite numbers with XMIN < XMAX and YMIN < YMAX
+                          (decimal or hex floats)
+      --unclipped         the whole diagram, unbounded cells included (json, svg)
+      --input-format FMT  xy|json|node|f64|geojson
       --columns X,Y       xy input: the fields holding x and y, by number from 1
                           ("3,4") or by header name ("lon,lat")
       --stats             print one JSON object on standard error, also when the
@@ -128,6 +144,7 @@ Algorithms:
 struct Options : PointCommand {
     std::optional<io::VoronoiFormat> format;
     std::optional<delaunay::Box> clip;
+    bool unclipped = false;
 };
 
 // --clip's four words as a box: finite numbers with xmin < xmax and ymin < ymax.
@@ -206,8 +223,13 @@ int run(const Options& o, const CommandLine& cli) {
     if (!kernel) return cli.usage_error(error);
     const std::optional<io::VoronoiFormat> format =
         output_format(o.format, o.output, io::VoronoiFormat::json, io::voronoi_format_from_path,
-                      ".json .svg", error);
+                      ".json .svg .geojson .wkt", error);
     if (!format) return cli.usage_error(error);
+    if (o.unclipped && o.clip) return cli.usage_error("--clip and --unclipped exclude each other");
+    if (o.unclipped && !io::holds_unbounded_cells(*format)) {
+        return cli.usage_error("--unclipped: the " + std::string(io::to_string(*format)) +
+                               " format holds polygons, not unbounded cells (json or svg)");
+    }
 
     // The output file exists (as a temporary) from here on, removed again on any failure.
     std::optional<PendingFile> output;
@@ -257,16 +279,17 @@ int run(const Options& o, const CommandLine& cli) {
     }
     times.voronoi = ms_since(voronoi_start);
 
-    if (o.clip) {
+    const delaunay::Box box = o.clip ? *o.clip : io::default_clip_box(points);
+    if (!o.unclipped) {
         steps.progress.phase("clipping " + std::to_string(points.size()) + " cells");
         const Clock::time_point start = Clock::now();
-        clipped = delaunay::clip(diagram, points, tri, *o.clip);
+        clipped = delaunay::clip(diagram, points, tri, box);
         times.clip = ms_since(start);
     }
 
     const bool written = steps.write(output, [&](std::ostream& out) {
         if (clipped) {
-            io::write_voronoi(out, points, *clipped, *o.clip, *format);
+            io::write_voronoi(out, points, *clipped, box, *format);
         } else {
             io::write_voronoi(out, points, diagram, *format);
         }
@@ -297,10 +320,12 @@ int voronoi_command(std::span<const std::string_view> args) {
     Options o;
     o.add_input_output_options(app);
     o.add_threads_option(app);
-    add_parsed(app, "-f,--format", "json or svg", o.format, io::voronoi_format_from_name);
+    add_parsed(app, "-f,--format", "json, svg, geojson or wkt", o.format,
+               io::voronoi_format_from_name);
     app.add_option_function<std::vector<std::string>>(
            "--clip", [&](const std::vector<std::string>& words) { o.clip = parse_box(words); })
         ->expected(4);
+    app.add_flag("--unclipped", o.unclipped);
     o.input.add_format_options(app);
     o.add_report_options(app);
     if (const std::optional<int> status = o.parse(cli, args)) return *status;

@@ -1,5 +1,5 @@
 // libFuzzer harness: a point reader of lib/io on arbitrary bytes. Built once per format
-// (EXIDEL_FUZZ_FORMAT: xy, json, node, f64). The reader either returns points, every one
+// (EXIDEL_FUZZ_FORMAT: xy, json, node, f64, geojson). The reader either returns points, every one
 // finite, or throws io::ReadError naming where the input went wrong; anything else (a
 // crash, another exception, a sanitizer report, a hang) is a finding.
 #include <cmath>

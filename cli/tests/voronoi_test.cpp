@@ -19,6 +19,7 @@
 #include "exidel/delaunay/triangulate.hpp"
 #include "exidel/delaunay/voronoi.hpp"
 #include "exidel/io/points.hpp"
+#include "exidel/io/voronoi.hpp"
 #include "exidel/predicates/adaptive.hpp"
 #include "run_binary.hpp"
 #include "voronoi_json.hpp"
@@ -85,7 +86,7 @@ TEST(ExidelVoronoi, HelpAndListing) {
 // every cell that one vertex, the duplicate's cell its twin's.
 TEST(ExidelVoronoi, CocircularLatticeIsOneVertexWithEverySite) {
     const std::vector<Point2> points = lattice_circle();
-    const RunResult r = run("", xy_text(points));
+    const RunResult r = run("--unclipped", xy_text(points));
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_TRUE(r.err.empty()) << r.err;
     const Library l = library(points);
@@ -108,7 +109,7 @@ TEST(ExidelVoronoi, CocircularLatticeIsOneVertexWithEverySite) {
     }
     // The square's corners and centre: four vertices, the centre's cell bounded.
     const std::vector<Point2> square = {{0, 0}, {4, 0}, {0, 4}, {4, 4}, {2, 2}};
-    const RunResult s = run("-q", xy_text(square));
+    const RunResult s = run("-q --unclipped", xy_text(square));
     ASSERT_EQ(s.status, 0) << s.err;
     expect_voronoi_json(s.out, library(square).diagram);
     EXPECT_FALSE(nlohmann::json::parse(s.out)["unbounded"][4].get<bool>());
@@ -134,7 +135,7 @@ TEST(ExidelVoronoi, CoordinatesReadBackBitForBit) {
     };
     for (const std::vector<Point2>& points : inputs) {
         const std::string in = write_file("bits.xy", xy_text(points));
-        const RunResult r = run("-i " + in + " -q");
+        const RunResult r = run("-i " + in + " -q --unclipped");
         ASSERT_EQ(r.status, 0) << r.err;
         const Library l = library(points);
         expect_voronoi_json(r.out, l.diagram);
@@ -145,11 +146,11 @@ TEST(ExidelVoronoi, CoordinatesReadBackBitForBit) {
         expect_voronoi_json(c.out,
                             delaunay::clip(l.diagram, points, l.triangulation.triangulation, box));
     }
-    const RunResult zero = run("-q", xy_text(inputs[0]));
+    const RunResult zero = run("-q --unclipped", xy_text(inputs[0]));
     EXPECT_EQ(zero.out.rfind("{\"vertices\": [[-0.0, 0.5]],", 0), 0u) << zero.out;
     EXPECT_TRUE(std::signbit(nlohmann::json::parse(zero.out)["vertices"][0][0].get<double>()));
     // The subnormal vertex of the second input, exactly.
-    const nlohmann::json sub = nlohmann::json::parse(run("-q", xy_text(inputs[1])).out);
+    const nlohmann::json sub = nlohmann::json::parse(run("-q --unclipped", xy_text(inputs[1])).out);
     EXPECT_EQ(sub["vertices"][0][0].get<double>(), 2e-310);
     EXPECT_EQ(sub["vertices"][1][0].get<double>(), 5e299);
 }
@@ -269,7 +270,7 @@ TEST(ExidelVoronoi, SvgIsAWholeDocument) {
 TEST(ExidelVoronoi, TinyAndCollinearInputSucceed) {
     for (const std::string input : {"", "1 2\n", "0 0\n1 0\n", "0 0\n1 1\n3 3\n1 1\n-2 -2\n"}) {
         const std::vector<Point2> points = io::parse_points(input, io::PointFormat::xy);
-        const RunResult r = run("", input);
+        const RunResult r = run("--unclipped", input);
         ASSERT_EQ(r.status, 0) << input << r.err;
         EXPECT_NE(r.err.find("exidel: note: no Voronoi vertices"), std::string::npos) << r.err;
         expect_voronoi_json(r.out, library(points).diagram);
@@ -317,10 +318,107 @@ TEST(ExidelVoronoi, StatsIsOneJsonObjectWithEveryKey) {
     EXPECT_GE(j["cocircular_tests"].get<std::uint64_t>(), 9u);
     EXPECT_TRUE(j["failure"].is_null());
     EXPECT_GE(j["total_ms"].get<double>(), j["voronoi_ms"].get<double>());
-    const nlohmann::json plain = nlohmann::json::parse(run("--stats", xy_text(points)).err);
+    const nlohmann::json plain =
+        nlohmann::json::parse(run("--stats --unclipped", xy_text(points)).err);
     EXPECT_TRUE(plain["clipped_vertices"].is_null());
     EXPECT_EQ(plain["algorithm"], "external");
     EXPECT_EQ(plain["kernel"], "adaptive");
+}
+
+// The viewBox of an SVG as four doubles (x, y, width, height).
+std::vector<double> view_box(const std::string& svg) {
+    const std::size_t at = svg.find("viewBox=\"");
+    EXPECT_NE(at, std::string::npos) << svg.substr(0, 300);
+    std::istringstream in(svg.substr(at + 9, svg.find('"', at + 9) - at - 9));
+    std::vector<double> v(4);
+    for (double& x : v) in >> x;
+    return v;
+}
+
+// The default: clipped to the sites' bounding box widened by 10% of its larger side, for
+// every format; --unclipped gives the whole diagram, --clip its own box.
+TEST(ExidelVoronoi, ClippedByDefaultToTheSitesBoxWithAMargin) {
+    std::vector<Point2> points;
+    for (int i = 0; i < 40; ++i) {
+        points.push_back({500000 + 37.0 * ((i * 7919) % 41), 4000000 + 23.0 * ((i * 104729) % 37)});
+    }
+    const Library l = library(points);
+    const delaunay::Box box = io::default_clip_box(points);
+    double x0 = points[0].x, x1 = x0, y0 = points[0].y, y1 = y0;
+    for (const Point2& p : points) {
+        x0 = std::min(x0, p.x), x1 = std::max(x1, p.x);
+        y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+    }
+    const double margin = io::default_clip_margin * std::max(x1 - x0, y1 - y0);
+    EXPECT_EQ(box.xmin, x0 - margin);
+    EXPECT_EQ(box.xmax, x1 + margin);
+    EXPECT_EQ(box.ymin, y0 - margin);
+    EXPECT_EQ(box.ymax, y1 + margin);
+    const RunResult r = run("-q", xy_text(points));
+    ASSERT_EQ(r.status, 0) << r.err;
+    expect_voronoi_json(r.out,
+                        delaunay::clip(l.diagram, points, l.triangulation.triangulation, box));
+    const RunResult whole = run("-q --unclipped", xy_text(points));
+    ASSERT_EQ(whole.status, 0) << whole.err;
+    expect_voronoi_json(whole.out, l.diagram);
+    // The SVG's viewBox is the box, in input units (y flipped).
+    const RunResult svg = run("-q -f svg", xy_text(points));
+    ASSERT_EQ(svg.status, 0) << svg.err;
+    expect_whole_svg(svg.out);
+    EXPECT_EQ(view_box(svg.out),
+              (std::vector<double>{box.xmin, -box.ymax, box.xmax - box.xmin, box.ymax - box.ymin}));
+    const RunResult clipped =
+        run("-q -f svg --clip 500100 4000100 500900 4000300", xy_text(points));
+    ASSERT_EQ(clipped.status, 0) << clipped.err;
+    EXPECT_EQ(view_box(clipped.out), (std::vector<double>{500100, -4000300, 800, 200}));
+    // One point: a unit margin.
+    const RunResult one = run("-q", "5e5 4e6\n");
+    ASSERT_EQ(one.status, 0) << one.err;
+    const std::vector<Point2> lone = {{5e5, 4e6}};
+    const Library ll = library(lone);
+    expect_voronoi_json(one.out, delaunay::clip(ll.diagram, lone, ll.triangulation.triangulation,
+                                                {499999, 3999999, 500001, 4000001}));
+    // Usage errors: both, and polygon formats without a box.
+    for (const char* args : {"--unclipped --clip 0 0 1 1", "--unclipped -f geojson",
+                             "--unclipped -f wkt", "--unclipped=1"}) {
+        const RunResult bad = run(args, "0 0\n1 0\n0 1\n");
+        EXPECT_EQ(bad.status, 2) << args;
+        EXPECT_EQ(bad.err.rfind("exidel voronoi: ", 0), 0u) << bad.err;
+    }
+}
+
+TEST(ExidelVoronoi, GeojsonAndWktHoldTheClippedCells) {
+    std::vector<Point2> points = lattice_circle();  // with a duplicate of site 4 as 12
+    const Library l = library(points);
+    const delaunay::Box box{-6, -6, 6, 6.5};
+    const delaunay::ClippedVoronoi c =
+        delaunay::clip(l.diagram, points, l.triangulation.triangulation, box);
+    const std::string in = write_file("vgis.xy", xy_text(points));
+    for (const char* ext : {"geojson", "wkt"}) {
+        const std::string out = work_path(std::string("vgis.") + ext);
+        const RunResult r = run("-q -i " + in + " --clip -6 -6 6 6.5 -o " + out);
+        ASSERT_EQ(r.status, 0) << r.err;
+        std::ostringstream expected;
+        io::write_voronoi(expected, points, c, box, *io::voronoi_format_from_name(ext));
+        EXPECT_EQ(slurp(out), expected.str()) << ext;
+    }
+    const nlohmann::json j = nlohmann::json::parse(slurp(work_path("vgis.geojson")));
+    ASSERT_EQ(j["features"].size(), points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        EXPECT_EQ(j["features"][i]["properties"]["site"], i);
+        const auto cell = c.cell(i);
+        const auto& ring = j["features"][i]["geometry"]["coordinates"][0];
+        ASSERT_EQ(ring.size(), cell.size() + 1) << i;
+        for (std::size_t k = 0; k <= cell.size(); ++k) {
+            const Point2 v = c.vertices[cell[k % cell.size()]];
+            EXPECT_EQ(ring[k][0].get<double>(), v.x);
+            EXPECT_EQ(ring[k][1].get<double>(), v.y);
+        }
+    }
+    EXPECT_EQ(j["features"][12]["geometry"], j["features"][4]["geometry"]);
+    const std::string wkt = slurp(work_path("vgis.wkt"));
+    EXPECT_EQ(wkt.rfind("GEOMETRYCOLLECTION (POLYGON ((", 0), 0u) << wkt;
+    EXPECT_EQ(std::count(wkt.begin(), wkt.end(), '\n'), static_cast<long>(points.size()));
 }
 
 }  // namespace

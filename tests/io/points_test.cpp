@@ -171,7 +171,7 @@ TEST(ReadXy, ColumnsByNumberAndByName) {
     EXPECT_EQ(columns_error("a,b,c\n1,2,3\n1,,3\n", "1,2").line(), 3u);  // picked and empty
 
     std::string error;
-    for (const std::string_view bad : {"", "1", "1,2,3", ",2", "0,1", "1x,2"}) {
+    for (const std::string_view bad : {"", "1", "1,2,3,4", ",2", "0,1", "1x,2", "1,2,"}) {
         EXPECT_FALSE(parse_columns(bad, error)) << bad;
         EXPECT_FALSE(error.empty());
     }

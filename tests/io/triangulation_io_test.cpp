@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -54,6 +55,16 @@ std::string written(const Triangulation& t, TriangulationFormat f,
 
 TEST(TriangulationFormats, NamesAndExtensions) {
     EXPECT_EQ(triangulation_format_from_path("out/a.svg"), TriangulationFormat::svg);
+    EXPECT_EQ(triangulation_format_from_path("a.geojson"), TriangulationFormat::geojson);
+    EXPECT_EQ(triangulation_format_from_path("a.wkt"), TriangulationFormat::wkt);
+    EXPECT_EQ(triangulation_format_from_path("a.ply"), TriangulationFormat::ply);
+    EXPECT_FALSE(triangulation_format_from_path("a.ply-ascii"));
+    EXPECT_EQ(triangulation_format_from_name("ply-ascii"), TriangulationFormat::ply_ascii);
+    EXPECT_EQ(to_string(TriangulationFormat::ply_ascii), "ply-ascii");
+    for (const char* name : {"json", "ele", "off", "svg", "geojson", "wkt", "ply", "ply-ascii"}) {
+        ASSERT_TRUE(triangulation_format_from_name(name)) << name;
+        EXPECT_EQ(to_string(*triangulation_format_from_name(name)), name);
+    }
     EXPECT_EQ(triangulation_format_from_path("a.b.ele"), TriangulationFormat::ele);
     EXPECT_EQ(triangulation_format_from_path("a.off"), TriangulationFormat::off);
     EXPECT_EQ(triangulation_format_from_path("a.json"), TriangulationFormat::json);
@@ -115,18 +126,27 @@ TEST(WriteTriangulation, SvgIsWellFormedWithYUp) {
     EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
     std::string why;
     EXPECT_TRUE(balanced_tags(svg, why)) << why << "\n" << svg;
-    EXPECT_NE(svg.find("<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"-20 -20 1040.000 "
-                       "1040.000\">"),
+    // The data's bounding box in input units, y flipped by the group, not rescaled.
+    EXPECT_NE(svg.find("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"1000.0\" "
+                       "height=\"1000.0\" viewBox=\"0 -1 1 1\">\n<g transform=\"scale(1,-1)\">"),
               std::string::npos)
         << svg;
-    // (0, 0) is at the bottom of the picture, (0, 1) at the top.
-    EXPECT_NE(svg.find("<path d=\"M0.000 1000.000 h0 M1000.000 1000.000 h0"), std::string::npos)
+    // The points in their own coordinates, in input order.
+    EXPECT_NE(svg.find("<path d=\"M0 0 h0 M1 0 h0 M1 1 h0 M0 1 h0 M0 0 h0\"/>"), std::string::npos)
         << svg;
-    EXPECT_NE(svg.find(" M0.000 0.000 h0 M0.000 1000.000 h0\"/>"), std::string::npos) << svg;
-    // Two triangles, one closed hull.
-    EXPECT_NE(svg.find("d=\"M0.000 1000.000 L1000.000 1000.000 L1000.000 0.000 Z M"),
-              std::string::npos);
-    EXPECT_NE(svg.find("L0.000 0.000 Z\"/>"), std::string::npos);
+    // The two triangles: their union filled, their five edges in one trail; one closed hull.
+    EXPECT_NE(svg.find("<g fill=\"#dde6f3\" stroke=\"none\">\n<path d=\"M0 0 L1 0 L1 1 L0 1 Z\"/>"),
+              std::string::npos)
+        << svg;
+    EXPECT_NE(svg.find("d=\"M0 0 L1 0 L1 1 L0 0 L0 1 L1 1\""), std::string::npos) << svg;
+    EXPECT_NE(svg.find("stroke=\"#c0392b\" stroke-width=\"0.002\" stroke-linejoin=\"round\" "
+                       "stroke-linecap=\"round\">\n<path d=\"M0 0 L1 0 L1 1 L0 1 Z\""),
+              std::string::npos)
+        << svg;
+    // Stroke widths are pixels of the 1000-pixel picture in data units: 1 unit is 1000
+    // pixels here.
+    EXPECT_NE(svg.find("stroke=\"#3b5b92\" stroke-width=\"5e-04\""), std::string::npos) << svg;
+    EXPECT_NE(svg.find("stroke=\"#c0392b\" stroke-width=\"0.002\""), std::string::npos) << svg;
     // Degenerate pictures are still well-formed: nothing, one point, huge coordinates.
     for (const std::vector<Point2>& pts :
          {std::vector<Point2>{}, std::vector<Point2>{{3, 4}},
@@ -141,8 +161,9 @@ TEST(WriteTriangulation, SvgIsWellFormedWithYUp) {
 }
 
 TEST(WriteTriangulation, SvgPathsStayShortForXmlParsers) {
-    // A 60 x 60 grid: 6962 triangles and a hull of 236 vertices, drawn with paths of at
-    // most svg_path_items triangles each, as XML parsers limit an attribute's length.
+    // A 60 x 60 grid: 6962 triangles and a hull of 236 vertices, drawn as the hull's fill and
+    // every edge once, in trails, with paths of at most svg_path_items edges each, as
+    // XML parsers limit an attribute's length.
     std::vector<Point2> grid;
     for (int i = 0; i < 60; ++i) {
         for (int j = 0; j < 60; ++j)
@@ -153,23 +174,45 @@ TEST(WriteTriangulation, SvgPathsStayShortForXmlParsers) {
     const std::string svg = written(r.triangulation, TriangulationFormat::svg, grid);
     std::string why;
     EXPECT_TRUE(balanced_tags(svg, why)) << why;
-    std::size_t paths = 0, triangles = 0, longest = 0;
-    for (std::size_t at = svg.find("<path d=\""); at != std::string::npos;
+    // The edge group's paths, read back as segments between coordinate pairs.
+    const std::size_t group = svg.find("<g fill=\"none\" stroke=\"#3b5b92\"");
+    ASSERT_NE(group, std::string::npos);
+    const std::size_t group_end = svg.find("</g>", group);
+    std::set<std::pair<std::pair<double, double>, std::pair<double, double>>> drawn;
+    std::size_t segments = 0, longest = 0;
+    for (std::size_t at = svg.find("<path d=\"", group); at < group_end;
          at = svg.find("<path d=\"", at + 1)) {
         const std::size_t end = svg.find('"', at + 9);
         const std::string d = svg.substr(at + 9, end - at - 9);
         longest = std::max(longest, d.size());
-        ++paths;
-        for (std::size_t z = d.find('Z'); z != std::string::npos; z = d.find('Z', z + 1))
-            ++triangles;
-        EXPECT_LE(std::count(d.begin(), d.end(), 'M'), static_cast<long>(svg_path_items));
+        EXPECT_LE(std::count(d.begin(), d.end(), 'L'), static_cast<long>(svg_path_items));
+        std::istringstream in(d);
+        std::string x;  // "M0.5" or "L2": the command, glued to x
+        std::pair<double, double> last{};
+        while (in >> x) {
+            std::pair<double, double> p;
+            p.first = std::stod(x.substr(1));
+            in >> p.second;
+            if (x[0] == 'L') {
+                drawn.insert(std::minmax(last, p));
+                ++segments;
+            }
+            last = p;
+        }
     }
-    const std::size_t n = r.triangulation.triangle_count();
-    EXPECT_EQ(n, 2u * 59 * 59);
-    EXPECT_EQ(triangles, n + 1);  // and the hull's Z
-    const std::size_t point_paths = (grid.size() + svg_path_items - 1) / svg_path_items;
-    EXPECT_EQ(paths, (n + svg_path_items - 1) / svg_path_items + 1 + point_paths);
+    const Triangulation& t = r.triangulation;
+    std::set<std::pair<std::pair<double, double>, std::pair<double, double>>> edges;
+    for (std::size_t e = 0; e < t.triangles.size(); ++e) {
+        const Point2 a = grid[t.triangles[e]], b = grid[t.triangles[e % 3 == 2 ? e - 2 : e + 1]];
+        edges.insert(std::minmax(std::pair{a.x, a.y}, std::pair{b.x, b.y}));
+    }
+    EXPECT_EQ(drawn, edges);
+    EXPECT_EQ(segments, edges.size());  // each edge once
     EXPECT_LT(longest, 60 * svg_path_items);
+    // The fill is the hull.
+    EXPECT_NE(svg.find("<g fill=\"#dde6f3\" stroke=\"none\">\n<path d=\"M0 0 L1 0 L2 0"),
+              std::string::npos);
+    const std::size_t point_paths = (grid.size() + svg_path_items - 1) / svg_path_items;
     // A hull longer than one path: pieces that join end to start, covering every edge.
     Triangulation big;
     big.collinear = true;

@@ -19,6 +19,7 @@
 
 #include "exidel/delaunay/parallel.hpp"
 #include "exidel/io/number.hpp"
+#include "geojson_points.hpp"
 #include "json.hpp"
 #include "text.hpp"
 
@@ -123,12 +124,16 @@ std::size_t column_index(const std::string& column, std::span<const std::string_
 // Where x and y are on an xy line, decided by its first line with content.
 struct XyLayout {
     std::size_t width = 2, ix = 0, iy = 1;  // fields per line, and which are x and y
-    bool columns = false;                   // chosen by ReadOptions::columns
+    std::size_t iz = 0;                     // which is z, when has_z
+    bool has_z = false;
+    bool columns = false;  // chosen by ReadOptions::columns
 };
 
-// Parses the data lines of `data` (line numbers counted from 1) into out[0, ...); returns
-// how many points it wrote (at most one per line).
-std::size_t parse_xy_lines(std::string_view data, const XyLayout& layout, Point2* out) {
+// Parses the data lines of `data` (line numbers counted from 1) into out[0, ...) (and their
+// z into z_out[0, ...) when the layout has z); returns how many points it wrote (at most
+// one per line).
+std::size_t parse_xy_lines(std::string_view data, const XyLayout& layout, Point2* out,
+                           double* z_out) {
     std::vector<std::string_view> fields;
     std::string error;
     std::size_t written = 0;
@@ -146,14 +151,14 @@ std::size_t parse_xy_lines(std::string_view data, const XyLayout& layout, Point2
                     : "expected 2 coordinates (x y), got " + std::to_string(fields.size()) +
                           (fields.size() > 2 ? " fields (pick two with --columns X,Y)" : ""));
         }
+        if (layout.has_z) z_out[written] = coordinate(number, fields[layout.iz], "z");
         out[written++] = {coordinate(number, fields[layout.ix], "x"),
                           coordinate(number, fields[layout.iy], "y")};
     });
     return written;
 }
 
-std::vector<Point2> parse_xy(std::string_view data, const std::optional<Columns>& columns,
-                             unsigned threads) {
+PointFile parse_xy(std::string_view data, const std::optional<Columns>& columns, unsigned threads) {
     // The first line with content: a header or not, and the layout of every line.
     XyLayout layout;
     layout.columns = columns.has_value();
@@ -180,17 +185,23 @@ std::vector<Point2> parse_xy(std::string_view data, const std::optional<Columns>
                 // A header when a column is picked by name, or when the picked fields are
                 // names (by number).
                 layout.width = fields.size();
-                const bool by_name = !std::isdigit(static_cast<unsigned char>(columns->x[0])) ||
-                                     !std::isdigit(static_cast<unsigned char>(columns->y[0]));
+                const auto named = [](const std::string& c) {
+                    return !std::isdigit(static_cast<unsigned char>(c[0]));
+                };
+                const bool by_name =
+                    named(columns->x) || named(columns->y) || (columns->z && named(*columns->z));
                 layout.ix = column_index(columns->x, fields, number);
                 layout.iy = column_index(columns->y, fields, number);
-                if (std::max(layout.ix, layout.iy) >= layout.width) {
-                    throw ReadError::at_line(
-                        number, "column " + std::to_string(std::max(layout.ix, layout.iy) + 1) +
-                                    " asked for, the line has " + std::to_string(layout.width) +
-                                    " fields");
+                layout.has_z = columns->z.has_value();
+                if (layout.has_z) layout.iz = column_index(*columns->z, fields, number);
+                const std::size_t widest = std::max({layout.ix, layout.iy, layout.iz});
+                if (widest >= layout.width) {
+                    throw ReadError::at_line(number, "column " + std::to_string(widest + 1) +
+                                                         " asked for, the line has " +
+                                                         std::to_string(layout.width) + " fields");
                 }
-                header = by_name || (is_name(fields[layout.ix]) && is_name(fields[layout.iy]));
+                header = by_name || (is_name(fields[layout.ix]) && is_name(fields[layout.iy]) &&
+                                     (!layout.has_z || is_name(fields[layout.iz])));
             } else {
                 header = fields.size() == 2 && is_name(fields[0]) && is_name(fields[1]);
             }
@@ -223,12 +234,16 @@ std::vector<Point2> parse_xy(std::string_view data, const std::optional<Columns>
                    (part.empty() || part.back() == '\n' ? 0 : 1);
     });
     for (std::size_t p = 0; p < parts; ++p) start[p + 1] = start[p] + lines[p];
-    std::vector<Point2> points(start[parts]);
+    PointFile file;
+    std::vector<Point2>& points = file.points;
+    points.resize(start[parts]);
+    if (layout.has_z) file.z.resize(start[parts]);
     std::vector<std::optional<ReadError>> part_error(parts);
     exidel::parallel_for(parts, threads, [&](std::size_t p) {
         try {
             written[p] = parse_xy_lines(rest.substr(cut[p], cut[p + 1] - cut[p]), layout,
-                                        points.data() + start[p]);
+                                        points.data() + start[p],
+                                        layout.has_z ? file.z.data() + start[p] : nullptr);
         } catch (const ReadError& e) {
             part_error[p] = e;
         }
@@ -244,10 +259,15 @@ std::vector<Point2> parse_xy(std::string_view data, const std::optional<Columns>
     for (std::size_t p = 1; p < parts; ++p) {
         std::copy_n(points.begin() + static_cast<std::ptrdiff_t>(start[p]), written[p],
                     points.begin() + static_cast<std::ptrdiff_t>(total));
+        if (layout.has_z) {
+            std::copy_n(file.z.begin() + static_cast<std::ptrdiff_t>(start[p]), written[p],
+                        file.z.begin() + static_cast<std::ptrdiff_t>(total));
+        }
         total += written[p];
     }
     points.resize(total);
-    return points;
+    if (layout.has_z) file.z.resize(total);
+    return file;
 }
 
 std::vector<Point2> parse_json(std::string_view data) {
@@ -413,19 +433,21 @@ std::string_view to_string(PointFormat f) noexcept {
         case PointFormat::json: return "json";
         case PointFormat::node: return "node";
         case PointFormat::f64: return "f64";
+        case PointFormat::geojson: return "geojson";
     }
     return "?";
 }
 
 std::optional<PointFormat> point_format_from_name(std::string_view name) {
-    for (PointFormat f :
-         {PointFormat::xy, PointFormat::json, PointFormat::node, PointFormat::f64}) {
+    for (PointFormat f : {PointFormat::xy, PointFormat::json, PointFormat::node, PointFormat::f64,
+                          PointFormat::geojson}) {
         if (to_string(f) == name) return f;
     }
     return std::nullopt;
 }
 
 PointFormat point_format_from_path(std::string_view path) {
+    if (path.ends_with(".geojson")) return PointFormat::geojson;
     if (path.ends_with(".json")) return PointFormat::json;
     if (path.ends_with(".node")) return PointFormat::node;
     if (path.ends_with(".f64")) return PointFormat::f64;
@@ -433,14 +455,23 @@ PointFormat point_format_from_path(std::string_view path) {
 }
 
 std::optional<Columns> parse_columns(std::string_view spec, std::string& error) {
-    const std::size_t comma = spec.find(',');
-    if (comma == std::string_view::npos || spec.find(',', comma + 1) != std::string_view::npos) {
-        error = "columns are two items X,Y (field numbers from 1, or header names), got " +
-                quoted(spec);
+    std::vector<std::string> items;
+    for (std::size_t start = 0;;) {
+        const std::size_t comma = spec.find(',', start);
+        items.emplace_back(spec.substr(start, comma - start));
+        if (comma == std::string_view::npos) break;
+        start = comma + 1;
+    }
+    if (items.size() < 2 || items.size() > 3) {
+        error =
+            "columns are two or three items X,Y[,Z] (field numbers from 1, or header "
+            "names), got " +
+            quoted(spec);
         return std::nullopt;
     }
-    Columns c{std::string(spec.substr(0, comma)), std::string(spec.substr(comma + 1))};
-    for (const std::string& item : {c.x, c.y}) {
+    Columns c{items[0], items[1], std::nullopt};
+    if (items.size() == 3) c.z = items[2];
+    for (const std::string& item : items) {
         if (item.empty()) {
             error = "an empty column in " + quoted(spec);
             return std::nullopt;
@@ -463,14 +494,19 @@ PointFile parse_point_file(std::string_view data, PointFormat format, const Read
         throw std::invalid_argument("columns apply to the xy format only, not to " +
                                     std::string(to_string(format)));
     }
+    if (options.z_property && format != PointFormat::geojson) {
+        throw std::invalid_argument("a z property applies to the geojson format only, not to " +
+                                    std::string(to_string(format)));
+    }
     // A UTF-8 byte order mark is not part of the text (spreadsheet CSV exports start with one).
     constexpr std::string_view bom = "\xEF\xBB\xBF";
     if (format != PointFormat::f64 && data.starts_with(bom)) data.remove_prefix(bom.size());
     switch (format) {
-        case PointFormat::xy: return {parse_xy(data, options.columns, options.threads), 0};
-        case PointFormat::json: return {parse_json(data), 0};
+        case PointFormat::xy: return parse_xy(data, options.columns, options.threads);
+        case PointFormat::json: return {parse_json(data), 0, {}};
         case PointFormat::node: return parse_node(data);
-        case PointFormat::f64: return {parse_f64(data), 0};
+        case PointFormat::f64: return {parse_f64(data), 0, {}};
+        case PointFormat::geojson: return detail::parse_geojson_points(data, options.z_property);
     }
     return {};
 }

@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <ostream>
 #include <string_view>
 
@@ -88,27 +89,111 @@ private:
     std::size_t used_ = 0;
 };
 
-/// The opening of an SVG picture of `width` x `height` units with `margin` around it
-/// (the viewBox starts at -margin, -margin), up to and including the closing '>' of the
-/// <svg> tag and a newline; the caller writes the content and "</svg>".
-inline void svg_header(NumberWriter& w, double width, double height, double margin) {
-    w.text(
-         "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-         "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"")
-        .fixed(-margin, 0)
-        .text(" ")
-        .fixed(-margin, 0)
-        .text(" ")
-        .fixed(width + 2 * margin, 3)
-        .text(" ")
-        .fixed(height + 2 * margin, 3)
-        .text("\">\n");
+/// Writes `v` as JSON: the shortest decimal that reads back as `v`, negative zero as
+/// "-0.0" (to_chars writes "-0", which many JSON readers take for the integer 0).
+inline void json_number(NumberWriter& w, double v) {
+    if (v == 0 && std::signbit(v)) {
+        w.text("-0.0");
+    } else {
+        w.number(v);
+    }
 }
 
-/// The radius of a point's dot in a picture `size` units wide with n points: smaller as
-/// the points get denser, between 0.5 and 4 units.
-inline double svg_dot_radius(double size, std::size_t n) {
-    return std::clamp(size / (4 * std::sqrt(static_cast<double>(n) + 1)), 0.5, 4.0);
+/// The part of the plane a picture shows, in data units: [x0, x1] x [y0, y1], finite,
+/// x0 < x1 and y0 < y1.
+struct SvgBox {
+    double x0 = -1, y0 = -1, x1 = 1, y1 = 1;
+};
+
+/// [lo - pad, hi + pad], each end moved by at least one representable step (a pad too
+/// small to change a large coordinate still opens the interval) and kept finite.
+inline void widen(double& lo, double& hi, double pad) {
+    constexpr double max = std::numeric_limits<double>::max();
+    const double a = lo - pad, b = hi + pad;
+    lo = std::max(a < lo ? a : std::nextafter(lo, -max), -max);
+    hi = std::min(b > hi ? b : std::nextafter(hi, max), max);
+}
+
+/// `v` if finite, else the largest double (a span of coordinates of opposite signs near
+/// the largest double overflows).
+inline double finite_span(double v) {
+    return std::isfinite(v) ? v : std::numeric_limits<double>::max();
+}
+
+/// The picture of the box [xmin, xmax] x [ymin, ymax] (finite, min <= max) as it is, padded
+/// only where a side is zero: a zero side becomes as long as the other one (centred); a
+/// point gets one unit on every side (2^-20 of its largest coordinate when that is more).
+inline SvgBox svg_box(double xmin, double ymin, double xmax, double ymax) {
+    SvgBox b{xmin, ymin, xmax, ymax};
+    const double w = finite_span(xmax - xmin), h = finite_span(ymax - ymin);
+    if (w == 0 && h == 0) {
+        const double pad = std::max({1.0, std::abs(xmin) * 0x1p-20, std::abs(ymin) * 0x1p-20});
+        widen(b.x0, b.x1, pad);
+        widen(b.y0, b.y1, pad);
+    } else if (w == 0) {
+        widen(b.x0, b.x1, h / 2);
+    } else if (h == 0) {
+        widen(b.y0, b.y1, w / 2);
+    }
+    return b;
+}
+
+/// The larger side of a picture on screen, in pixels (the width and height attributes).
+inline constexpr double svg_screen_size = 1000;
+
+/// The end of a path element.
+inline constexpr std::string_view svg_path_end = "\"/>\n";
+
+/// The size of one screen pixel in the data units of a picture of `box` shown at its width
+/// and height attributes: stroke widths are written as pixels times this, so that lines
+/// and dots have the same size on screen whatever the scale of the data (1e-6 degrees or
+/// 1e6 metres). Not vector-effect="non-scaling-stroke": librsvg before 2.56 (Debian 12's
+/// 2.54) ignores it, and its strokes then come out in data units, a thousand times too
+/// wide or too thin.
+inline double svg_pixel(const SvgBox& box) {
+    return std::max(finite_span(box.x1 - box.x0), finite_span(box.y1 - box.y0)) / svg_screen_size;
+}
+
+/// stroke-width="W" for a width of `pixels` screen pixels in a picture of `box`.
+inline NumberWriter& svg_stroke_width(NumberWriter& w, const SvgBox& box, double pixels) {
+    return w.text("stroke-width=\"").number(pixels * svg_pixel(box)).text("\"");
+}
+
+/// The opening of an SVG picture of `box` in data coordinates: the viewBox is the box
+/// (x = x0, y = -y1, since y is flipped), width and height put its larger side at
+/// svg_screen_size pixels, and a group flips y (scale(1,-1)) so that the content is
+/// written in the data's own coordinates, up being up. Written up to and including that
+/// group's opening tag and a newline; the caller writes the content and svg_footer.
+inline void svg_header(NumberWriter& w, const SvgBox& box) {
+    const double width = finite_span(box.x1 - box.x0), height = finite_span(box.y1 - box.y0);
+    const double larger = std::max(width, height);
+    const auto pixels = [&](double side) {
+        return std::max(1.0, std::round(side / larger * svg_screen_size * 10) / 10);
+    };
+    w.text(
+         "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+         "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"")
+        .fixed(pixels(width), 1)
+        .text("\" height=\"")
+        .fixed(pixels(height), 1)
+        .text("\" viewBox=\"")
+        .number(box.x0)
+        .text(" ")
+        .number(-box.y1)
+        .text(" ")
+        .number(width)
+        .text(" ")
+        .number(height)
+        .text("\">\n<g transform=\"scale(1,-1)\">\n");
+}
+
+/// Closes what svg_header opened.
+inline void svg_footer(NumberWriter& w) { w.text("</g>\n</svg>\n"); }
+
+/// The radius of a point's dot, in screen pixels, with n points in a picture of
+/// svg_screen_size pixels: smaller as the points get denser, between 0.5 and 4.
+inline double svg_dot_radius(std::size_t n) {
+    return std::clamp(svg_screen_size / (4 * std::sqrt(static_cast<double>(n) + 1)), 0.5, 4.0);
 }
 
 }  // namespace exidel::io::detail

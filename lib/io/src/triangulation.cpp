@@ -16,6 +16,7 @@
 #include "exidel/delaunay/parallel.hpp"
 #include "json.hpp"
 #include "text.hpp"
+#include "writers.hpp"
 
 namespace exidel::io {
 
@@ -88,14 +89,22 @@ void write_ele(std::ostream& out, const Triangulation& tri, std::uint64_t base) 
     }
 }
 
-void write_off(std::ostream& out, std::span<const Point2> points, const Triangulation& tri) {
+void write_off(std::ostream& out, std::span<const Point2> points, const Triangulation& tri,
+               std::span<const double> z) {
     NumberWriter w(out);
     w.text("OFF\n")
         .number(static_cast<std::uint64_t>(points.size()))
         .text(" ")
         .number(static_cast<std::uint64_t>(tri.triangle_count()))
         .text(" 0\n");
-    for (const Point2& p : points) w.number(p.x).text(" ").number(p.y).text(" 0\n");
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        w.number(points[i].x).text(" ").number(points[i].y);
+        if (z.empty()) {
+            w.text(" 0\n");
+        } else {
+            w.text(" ").number(z[i]).text("\n");
+        }
+    }
     for (std::size_t t = 0; t < tri.triangle_count(); ++t) {
         w.text("3");
         for (std::size_t k = 0; k < 3; ++k) {
@@ -105,43 +114,97 @@ void write_off(std::ostream& out, std::span<const Point2> points, const Triangul
     }
 }
 
-// Maps input coordinates into the picture: the larger side of the bounding box becomes
-// `size` units, y grows downwards in SVG so it is flipped. Halves are subtracted
-// (x/2 - min/2) so that coordinates near +-DBL_MAX cannot overflow the span.
-struct Frame {
-    double min_x = 0, max_y = 0, scale = 1, width = 0, height = 0;
-    static constexpr double size = 1000;
-    static constexpr double margin = 20;
-
-    explicit Frame(std::span<const Point2> points) {
-        if (points.empty()) return;
-        double min_y = points[0].y, max_x = points[0].x;
-        min_x = points[0].x;
-        max_y = points[0].y;
-        for (const Point2& p : points) {
-            min_x = std::min(min_x, p.x);
-            max_x = std::max(max_x, p.x);
-            min_y = std::min(min_y, p.y);
-            max_y = std::max(max_y, p.y);
-        }
-        const double hx = max_x / 2 - min_x / 2, hy = max_y / 2 - min_y / 2;
-        const double half = std::max(hx, hy);
-        // A single point, or a span so small its half rounds to zero: draw at the origin.
-        scale = half > 0 ? size / half : 1;
-        width = hx * scale;
-        height = hy * scale;
+// The points' bounding box, padded where a side is zero (text.hpp's svg_box).
+detail::SvgBox bounds(std::span<const Point2> points) {
+    if (points.empty()) return {};
+    double x0 = points[0].x, x1 = points[0].x, y0 = points[0].y, y1 = points[0].y;
+    for (const Point2& p : points) {
+        x0 = std::min(x0, p.x);
+        x1 = std::max(x1, p.x);
+        y0 = std::min(y0, p.y);
+        y1 = std::max(y1, p.y);
     }
-    double x(const Point2& p) const { return (p.x / 2 - min_x / 2) * scale; }
-    double y(const Point2& p) const { return (max_y / 2 - p.y / 2) * scale; }
-};
+    return detail::svg_box(x0, y0, x1, y1);
+}
+
+// Every edge of the triangulation once, as trails (walks along unused edges: one vertex
+// written per edge, plus one per trail), in paths of at most svg_path_items edges.
+// `xy(command, v)` writes a path command and vertex v.
+template <class XY>
+void draw_edges(NumberWriter& w, std::size_t vertex_count, const Triangulation& tri, XY xy) {
+    const std::size_t n = tri.triangles.size();
+    const auto next = [](std::size_t e) { return e % 3 == 2 ? e - 2 : e + 1; };
+    // The edges (a half-edge without twin, or the smaller of a pair), and each vertex's.
+    std::vector<std::uint32_t> offset(vertex_count + 1, 0), incident;
+    const auto is_edge = [&](std::size_t e) {
+        return tri.halfedges[e] < 0 || e < static_cast<std::size_t>(tri.halfedges[e]);
+    };
+    for (std::size_t e = 0; e < n; ++e) {
+        if (!is_edge(e)) continue;
+        ++offset[tri.triangles[e] + 1];
+        ++offset[tri.triangles[next(e)] + 1];
+    }
+    for (std::size_t v = 0; v < vertex_count; ++v) offset[v + 1] += offset[v];
+    incident.resize(offset[vertex_count]);
+    std::vector<std::uint32_t> fill(offset.begin(), offset.end() - 1);
+    for (std::size_t e = 0; e < n; ++e) {
+        if (!is_edge(e)) continue;
+        incident[fill[tri.triangles[e]]++] = static_cast<std::uint32_t>(e);
+        incident[fill[tri.triangles[next(e)]]++] = static_cast<std::uint32_t>(e);
+    }
+    std::vector<std::uint8_t> used(n, 0);
+    std::vector<std::uint32_t> cursor(offset.begin(), offset.end() - 1), left(vertex_count);
+    for (std::size_t v = 0; v < vertex_count; ++v) left[v] = offset[v + 1] - offset[v];
+    const auto unused_edge = [&](std::uint32_t v) -> std::int64_t {
+        while (cursor[v] < offset[v + 1] && used[incident[cursor[v]]]) ++cursor[v];
+        return cursor[v] < offset[v + 1] ? static_cast<std::int64_t>(incident[cursor[v]]) : -1;
+    };
+    std::size_t in_path = 0;  // edges in the open path element
+    bool open = false;
+    const auto walk = [&](std::uint32_t v) {
+        bool started = false;
+        for (std::int64_t e; (e = unused_edge(v)) >= 0;) {
+            used[static_cast<std::size_t>(e)] = 1;
+            const std::uint32_t a = tri.triangles[static_cast<std::size_t>(e)];
+            const std::uint32_t b = tri.triangles[next(static_cast<std::size_t>(e))];
+            const std::uint32_t u = a == v ? b : a;
+            --left[a];
+            --left[b];
+            if (in_path == svg_path_items) {
+                w.text(detail::svg_path_end);
+                open = false;
+                in_path = 0;
+            }
+            if (!open) {
+                xy("<path d=\"M", v);
+                open = true;
+            } else if (!started) {
+                xy(" M", v);
+            }
+            started = true;
+            xy(" L", u);
+            ++in_path;
+            v = u;
+        }
+    };
+    // Trails from odd vertices first: each ends at another odd vertex, so there are about
+    // half as many trails as odd vertices; then the closed trails that remain.
+    for (std::uint32_t v = 0; v < vertex_count; ++v) {
+        if (left[v] % 2 == 1) walk(v);
+    }
+    for (std::uint32_t v = 0; v < vertex_count; ++v) {
+        while (left[v] > 0) walk(v);
+    }
+    if (open) w.text(detail::svg_path_end);
+}
 
 void write_svg(std::ostream& out, std::span<const Point2> points, const Triangulation& tri) {
-    const Frame f(points);
     NumberWriter w(out);
     const auto xy = [&](const char* command, std::uint32_t v) {
-        w.text(command).fixed(f.x(points[v]), 3).text(" ").fixed(f.y(points[v]), 3);
+        w.text(command).number(points[v].x).text(" ").number(points[v].y);
     };
-    detail::svg_header(w, f.width, f.height, Frame::margin);
+    const detail::SvgBox box = bounds(points);
+    detail::svg_header(w, box);
     w.text("<!-- exidel triangulation: ")
         .number(static_cast<std::uint64_t>(points.size()))
         .text(" points, ")
@@ -149,27 +212,36 @@ void write_svg(std::ostream& out, std::span<const Point2> points, const Triangul
         .text(" triangles, ")
         .number(static_cast<std::uint64_t>(tri.hull.size()))
         .text(" hull vertices -->\n");
-    // Each group's style is set once; its paths carry only their data.
+    // Each group's style is set once; its paths carry only their data. Stroke widths are
+    // screen pixels in data units (svg_stroke_width).
     if (tri.triangle_count() > 0) {
-        w.text(
-            "<g fill=\"#dde6f3\" stroke=\"#3b5b92\" stroke-width=\"0.5\" "
-            "stroke-linejoin=\"round\">\n");
-        for (std::size_t t = 0; t < tri.triangle_count(); ++t) {
-            const bool first = t % svg_path_items == 0;
-            if (first) w.text(t ? "\"/>\n<path d=\"" : "<path d=\"");
-            xy(first ? "M" : " M", tri.triangles[3 * t]);
-            xy(" L", tri.triangles[3 * t + 1]);
-            xy(" L", tri.triangles[3 * t + 2]);
-            w.text(" Z");
+        // The triangles are drawn as their union's fill and their edges, each edge once:
+        // writing every triangle's three corners would write every vertex six times on
+        // average and half again the bytes (librsvg refuses a file above about 200 MB,
+        // which 10^6 points of shortest round-trip coordinates pass that way).
+        // The fill: the hull (convex) as a fan of pieces from its first vertex, each of at
+        // most svg_path_items vertices.
+        w.text("<g fill=\"#dde6f3\" stroke=\"none\">\n");
+        const std::size_t h = tri.hull.size();
+        for (std::size_t k = 1; k + 1 < h; k += svg_path_items - 2) {
+            xy("<path d=\"M", tri.hull[0]);
+            for (std::size_t j = k; j < std::min(h, k + svg_path_items - 1); ++j) {
+                xy(" L", tri.hull[j]);
+            }
+            w.text(" Z").text(detail::svg_path_end);
         }
-        w.text("\"/>\n</g>\n");
+        w.text("</g>\n<g fill=\"none\" stroke=\"#3b5b92\" ");
+        detail::svg_stroke_width(w, box, 0.5)
+            .text(" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n");
+        draw_edges(w, points.size(), tri, xy);
+        w.text("</g>\n");
     }
     if (!tri.hull.empty()) {
         // A triangulated hull is a closed cycle; a collinear "hull" is an open chain. In
         // pieces of svg_path_items edges, each starting where the previous one ended.
-        w.text(
-            "<g fill=\"none\" stroke=\"#c0392b\" stroke-width=\"2\" "
-            "stroke-linejoin=\"round\" stroke-linecap=\"round\">\n<path d=\"");
+        w.text("<g fill=\"none\" stroke=\"#c0392b\" ");
+        detail::svg_stroke_width(w, box, 2).text(
+            " stroke-linejoin=\"round\" stroke-linecap=\"round\">\n<path d=\"");
         const std::size_t h = tri.hull.size();
         const std::size_t vertices = tri.collinear ? h : h + 1;  // the cycle returns to the start
         const bool one_cycle = !tri.collinear && h <= svg_path_items;  // closed by Z instead
@@ -177,25 +249,29 @@ void write_svg(std::ostream& out, std::span<const Point2> points, const Triangul
             const bool restart = i > 0 && i % svg_path_items == 0 && i + 1 < vertices;
             if (restart) {
                 xy(" L", tri.hull[i % h]);
-                w.text("\"/>\n<path d=\"");
+                w.text(detail::svg_path_end).text("<path d=\"");
             }
             xy(i == 0 || restart ? "M" : " L", tri.hull[i % h]);
         }
-        w.text(one_cycle ? " Z\"/>\n</g>\n" : "\"/>\n</g>\n");
+        w.text(one_cycle ? " Z" : "").text(detail::svg_path_end).text("</g>\n");
     }
-    const double r = detail::svg_dot_radius(Frame::size, points.size());
+    const double r = detail::svg_dot_radius(points.size());
     // The points as dots: zero-length subpaths with round caps of diameter 2r, in paths of
     // svg_path_items points. Not one <circle> each: librsvg refuses a file of more than
     // 10^6 elements.
-    w.text("<g fill=\"none\" stroke=\"#111\" stroke-linecap=\"round\" stroke-width=\"")
-        .fixed(2 * r, 2)
-        .text("\">\n");
+    w.text("<g fill=\"none\" stroke=\"#111\" stroke-linecap=\"round\" ");
+    detail::svg_stroke_width(w, box, 2 * r).text(">\n");
     for (std::size_t i = 0; i < points.size(); ++i) {
-        if (i % svg_path_items == 0) w.text(i ? "\"/>\n<path d=\"" : "<path d=\"");
-        w.text(i % svg_path_items ? " M" : "M").fixed(f.x(points[i]), 3).text(" ");
-        w.fixed(f.y(points[i]), 3).text(" h0");
+        if (i % svg_path_items == 0) {
+            if (i) w.text(detail::svg_path_end);
+            w.text("<path d=\"");
+        }
+        xy(i % svg_path_items ? " M" : "M", static_cast<std::uint32_t>(i));
+        w.text(" h0");
     }
-    w.text(points.empty() ? "</g>\n</svg>\n" : "\"/>\n</g>\n</svg>\n");
+    if (!points.empty()) w.text(detail::svg_path_end);
+    w.text("</g>\n");
+    detail::svg_footer(w);
 }
 
 }  // namespace
@@ -206,13 +282,19 @@ std::string_view to_string(TriangulationFormat f) noexcept {
         case TriangulationFormat::ele: return "ele";
         case TriangulationFormat::off: return "off";
         case TriangulationFormat::svg: return "svg";
+        case TriangulationFormat::geojson: return "geojson";
+        case TriangulationFormat::wkt: return "wkt";
+        case TriangulationFormat::ply: return "ply";
+        case TriangulationFormat::ply_ascii: return "ply-ascii";
     }
     return "?";
 }
 
 std::optional<TriangulationFormat> triangulation_format_from_name(std::string_view name) {
-    for (TriangulationFormat f : {TriangulationFormat::json, TriangulationFormat::ele,
-                                  TriangulationFormat::off, TriangulationFormat::svg}) {
+    for (TriangulationFormat f :
+         {TriangulationFormat::json, TriangulationFormat::ele, TriangulationFormat::off,
+          TriangulationFormat::svg, TriangulationFormat::geojson, TriangulationFormat::wkt,
+          TriangulationFormat::ply, TriangulationFormat::ply_ascii}) {
         if (to_string(f) == name) return f;
     }
     return std::nullopt;
@@ -224,17 +306,31 @@ std::optional<TriangulationFormat> triangulation_format_from_path(std::string_vi
     if (dot == std::string_view::npos || (slash != std::string_view::npos && dot < slash)) {
         return std::nullopt;
     }
-    return triangulation_format_from_name(path.substr(dot + 1));
+    const std::string_view extension = path.substr(dot + 1);
+    if (extension == "ply-ascii") return std::nullopt;  // a format name, not an extension
+    return triangulation_format_from_name(extension);
 }
 
 void write_triangulation(std::ostream& out, std::span<const Point2> points,
                          const Triangulation& tri, TriangulationFormat format,
                          const WriteOptions& options) {
+    const std::span<const double> z = options.z;
+    if (!z.empty() && z.size() != points.size()) {
+        throw std::invalid_argument("write_triangulation: " + std::to_string(z.size()) +
+                                    " z values for " + std::to_string(points.size()) + " points");
+    }
     switch (format) {
         case TriangulationFormat::json: return write_json(out, tri, options.threads);
         case TriangulationFormat::ele: return write_ele(out, tri, options.index_base);
-        case TriangulationFormat::off: return write_off(out, points, tri);
+        case TriangulationFormat::off: return write_off(out, points, tri, z);
         case TriangulationFormat::svg: return write_svg(out, points, tri);
+        case TriangulationFormat::geojson:
+            return detail::write_triangulation_geojson(out, points, tri, z);
+        case TriangulationFormat::wkt: return detail::write_triangulation_wkt(out, points, tri, z);
+        case TriangulationFormat::ply:
+            return detail::write_triangulation_ply(out, points, tri, z, true);
+        case TriangulationFormat::ply_ascii:
+            return detail::write_triangulation_ply(out, points, tri, z, false);
     }
 }
 

@@ -7,10 +7,13 @@
 #include <limits>
 #include <numeric>
 #include <ostream>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "exidel/io/triangulation.hpp"
 #include "text.hpp"
+#include "writers.hpp"
 
 namespace exidel::io {
 
@@ -23,15 +26,7 @@ using detail::NumberWriter;
 
 // ---- json -------------------------------------------------------------------------
 
-// The shortest decimal that reads back as `v`; negative zero as "-0.0", which every JSON
-// reader takes for a floating-point number (to_chars writes "-0", an integer to many).
-void coordinate(NumberWriter& w, double v) {
-    if (v == 0 && std::signbit(v)) {
-        w.text("-0.0");
-    } else {
-        w.number(v);
-    }
-}
+void coordinate(NumberWriter& w, double v) { detail::json_number(w, v); }
 
 // "[[a, b], [c], []]": list(k) for k < count, each a span of indices.
 template <class List>
@@ -74,58 +69,19 @@ void write_json(std::ostream& out, const Diagram& d) {
 
 // ---- svg --------------------------------------------------------------------------
 
-struct XY {
-    double x, y;
-};
-
-// Maps a rectangle of the plane onto the picture: its larger side becomes `size` units, y
-// is flipped so that up is up. Computed on quarters of the coordinates, so that neither
-// a span nor its padding can overflow near +-DBL_MAX.
+// The box a picture shows, in data coordinates (the SVG is written in them: text.hpp's
+// svg_header), and lines clipped to it.
 class Picture {
 public:
-    static constexpr double size = 1000;
-    static constexpr double margin = 20;
+    explicit Picture(const detail::SvgBox& box) : box_(box) {}
+    const detail::SvgBox& box() const { return box_; }
 
-    /// The rectangle [xmin, xmax] x [ymin, ymax] (finite, min <= max), padded by `pad`
-    /// times its larger side on every side; a side shorter than `min_aspect` times the
-    /// other is widened to that, about its middle. A point becomes a square around it.
-    Picture(double xmin, double ymin, double xmax, double ymax, double pad, double min_aspect) {
-        double x0 = xmin / 4, x1 = xmax / 4, y0 = ymin / 4, y1 = ymax / 4;
-        double span = std::max(x1 - x0, y1 - y0);
-        if (span == 0) {
-            span = std::max({1.0, std::abs(x0), std::abs(y0)});
-            pad = 0.5;
-        }
-        const double p = pad * span;
-        x0 -= p, x1 += p, y0 -= p, y1 += p;
-        const double wider = std::max(x1 - x0, y1 - y0) * min_aspect;
-        if (x1 - x0 < wider) {
-            const double e = (wider - (x1 - x0)) / 2;
-            x0 -= e, x1 += e;
-        }
-        if (y1 - y0 < wider) {
-            const double e = (wider - (y1 - y0)) / 2;
-            y0 -= e, y1 += e;
-        }
-        x0_ = x0;
-        y1_ = y1;
-        span_ = std::max(x1 - x0, y1 - y0);
-        width_ = (x1 - x0) / span_ * size;
-        height_ = (y1 - y0) / span_ * size;
-    }
-
-    XY operator()(Point2 p) const {
-        return {(p.x / 4 - x0_) / span_ * size, (y1_ - p.y / 4) / span_ * size};
-    }
-    double width() const { return width_; }
-    double height() const { return height_; }
-
-    /// The part of {from + t dir : t >= t0} inside the viewBox (dir in picture
-    /// coordinates, not zero), as its two ends; false if it misses the viewBox.
-    bool clip(XY from, XY dir, double t0, XY& a, XY& b) const {
+    /// The part of {from + t dir : t >= t0} inside the box (dir not zero, its larger
+    /// component of size 1), as its two ends; false if it misses the box.
+    bool clip(Point2 from, Point2 dir, double t0, Point2& a, Point2& b) const {
         double lo = t0, hi = std::numeric_limits<double>::infinity();
         const double p[2] = {from.x, from.y}, d[2] = {dir.x, dir.y};
-        const double edge[2][2] = {{-margin, width_ + margin}, {-margin, height_ + margin}};
+        const double edge[2][2] = {{box_.x0, box_.x1}, {box_.y0, box_.y1}};
         for (int k = 0; k < 2; ++k) {
             if (d[k] == 0) {
                 if (p[k] < edge[k][0] || p[k] > edge[k][1]) return false;
@@ -136,61 +92,64 @@ public:
             hi = std::min(hi, std::max(s, u));
         }
         if (!(lo <= hi)) return false;
-        a = {from.x + lo * dir.x, from.y + lo * dir.y};
-        b = {from.x + hi * dir.x, from.y + hi * dir.y};
+        // Rounding (or an overflow near the largest doubles) may step past the box.
+        const auto inside = [&](double t) {
+            return Point2{std::clamp(from.x + t * dir.x, box_.x0, box_.x1),
+                          std::clamp(from.y + t * dir.y, box_.y0, box_.y1)};
+        };
+        a = inside(lo);
+        b = inside(hi);
         return true;
     }
 
 private:
-    double x0_ = 0, y1_ = 0, span_ = 1, width_ = 0, height_ = 0;
+    detail::SvgBox box_;
 };
 
-// One <g> of unfilled paths, each of at most svg_path_items items (io/triangulation.hpp
-// says why), with round caps (a zero-length subpath draws a dot).
+// One <g> of unfilled paths, each of at most svg_path_items / 2 items (io/triangulation.hpp
+// says why), with round caps (a zero-length subpath draws a dot) and strokes of
+// `pixels` screen pixels in a picture of `box`.
 class PathGroup {
 public:
-    PathGroup(NumberWriter& w, std::string_view colour, double stroke_width) : w_(w) {
-        w_.text("<g fill=\"none\" stroke-linecap=\"round\" stroke=\"")
-            .text(colour)
-            .text("\" stroke-width=\"")
-            .fixed(stroke_width, 2)
-            .text("\">\n");
+    PathGroup(NumberWriter& w, const detail::SvgBox& box, std::string_view colour, double pixels)
+        : w_(w) {
+        w_.text("<g fill=\"none\" stroke-linecap=\"round\" stroke=\"").text(colour).text("\" ");
+        detail::svg_stroke_width(w_, box, pixels).text(">\n");
     }
-    ~PathGroup() { w_.text(items_ ? "\"/>\n</g>\n" : "</g>\n"); }
+    ~PathGroup() {
+        if (items_) w_.text(detail::svg_path_end);
+        w_.text("</g>\n");
+    }
     PathGroup(const PathGroup&) = delete;
     PathGroup& operator=(const PathGroup&) = delete;
 
-    /// Starts an item: a new path every svg_path_items items.
+    /// Starts an item: a new path every svg_path_items / 2 items (a segment writes two
+    /// points: about 40 kB of attribute per path, as io/triangulation.hpp says).
     NumberWriter& item() {
-        if (items_ % svg_path_items == 0) {
-            w_.text(items_ ? "\"/>\n<path d=\"" : "<path d=\"");
+        if (items_ % (svg_path_items / 2) == 0) {
+            if (items_) w_.text(detail::svg_path_end);
+            w_.text("<path d=\"");
         } else {
             w_.text(" ");
         }
         ++items_;
         return w_;
     }
-    NumberWriter& xy(XY p) { return w_.fixed(p.x, 3).text(" ").fixed(p.y, 3); }
-    void segment(XY a, XY b) {
+    NumberWriter& xy(Point2 p) { return w_.number(p.x).text(" ").number(p.y); }
+    void segment(Point2 a, Point2 b) {
         item().text("M");
         xy(a).text(" L");
         xy(b);
     }
-    void dot(XY p) {
+    void dot(Point2 p) {
         item().text("M");
         xy(p).text(" h0");
     }
-    /// A circle of radius r: two half-circle arcs.
-    void ring(XY p, double r) {
+    /// The outline of the box.
+    void rectangle(const detail::SvgBox& b) {
         item().text("M");
-        xy({p.x - r, p.y}).text(" a").fixed(r, 2).text(" ").fixed(r, 2).text(" 0 1 0 ");
-        w_.fixed(2 * r, 2).text(" 0 a").fixed(r, 2).text(" ").fixed(r, 2).text(" 0 1 0 ");
-        w_.fixed(-2 * r, 2).text(" 0");
-    }
-    /// The outline of the rectangle with corners a and b.
-    void rectangle(XY a, XY b) {
-        item().text("M");
-        xy(a).text(" H").fixed(b.x, 3).text(" V").fixed(b.y, 3).text(" H").fixed(a.x, 3).text(" Z");
+        xy({b.x0, b.y0}).text(" H").number(b.x1).text(" V").number(b.y1).text(" H");
+        w_.number(b.x0).text(" Z");
     }
 
 private:
@@ -248,46 +207,47 @@ void draw(std::ostream& out, std::span<const Point2> points, const Diagram& d,
     std::size_t merged = 0;
     for (std::size_t v = 0; v < voronoi_vertices; ++v) merged += distinct_sites(v) >= 4 ? 1 : 0;
     NumberWriter w(out);
-    detail::svg_header(w, f.width(), f.height(), Picture::margin);
+    detail::svg_header(w, f.box());
     w.text("<!-- exidel voronoi: ")
         .number(static_cast<std::uint64_t>(points.size()))
         .text(" sites, ")
         .number(static_cast<std::uint64_t>(voronoi_vertices))
         .text(" Voronoi vertices, ")
         .number(static_cast<std::uint64_t>(merged))
-        .text(" of them of four or more cocircular sites (ringed) -->\n");
-    const double r = detail::svg_dot_radius(Picture::size, points.size());
+        .text(" of them of four or more cocircular sites (on orange discs) -->\n");
+    const double r = detail::svg_dot_radius(points.size());
     {
-        PathGroup g(w, "#3b5b92", std::clamp(r / 2, 0.25, 1.0));
+        PathGroup g(w, f.box(), "#3b5b92", std::clamp(r / 2, 0.25, 1.0));
         for (const std::uint64_t e : edges(d, closed)) {
-            g.segment(f(d.vertices[e >> 32]), f(d.vertices[e & 0xffffffffu]));
+            g.segment(d.vertices[e >> 32], d.vertices[e & 0xffffffffu]);
         }
         extra(g);
     }
     if (merged > 0) {
-        PathGroup g(w, "#e67e22", 1.5);
+        // An orange disc under the vertex's dot (a ring's radius would be in data units).
+        PathGroup g(w, f.box(), "#e67e22", 4 * r + 4);
         for (std::size_t v = 0; v < voronoi_vertices; ++v) {
-            if (distinct_sites(v) >= 4) g.ring(f(d.vertices[v]), 2 * r + 2);
+            if (distinct_sites(v) >= 4) g.dot(d.vertices[v]);
         }
     }
     if (voronoi_vertices > 0) {
-        PathGroup g(w, "#3b5b92", 1.25 * r);
-        for (std::size_t v = 0; v < voronoi_vertices; ++v) g.dot(f(d.vertices[v]));
+        PathGroup g(w, f.box(), "#3b5b92", 1.25 * r);
+        for (std::size_t v = 0; v < voronoi_vertices; ++v) g.dot(d.vertices[v]);
     }
     {
-        PathGroup g(w, "#111", 2 * r);
+        PathGroup g(w, f.box(), "#111", 2 * r);
         for (std::size_t i = 0; i < points.size(); ++i) {
-            if (!repeated[i] && (drawn_sites.empty() || drawn_sites[i])) g.dot(f(points[i]));
+            if (!repeated[i] && (drawn_sites.empty() || drawn_sites[i])) g.dot(points[i]);
         }
     }
-    w.text("</svg>\n");
+    detail::svg_footer(w);
 }
 
-// The picture's direction of a plane vector (y flipped), scaled to at most 1 per
-// component so that huge and tiny vectors alike stay finite and nonzero.
-XY direction(Point2 v) {
+// `v` scaled so that its larger component has size 1 (huge and tiny vectors alike stay
+// finite and nonzero); (0, 0) stays.
+Point2 direction(Point2 v) {
     const double m = std::max(std::abs(v.x), std::abs(v.y));
-    return m > 0 ? XY{v.x / m, -v.y / m} : XY{0, 0};
+    return m > 0 ? Point2{v.x / m, v.y / m} : Point2{0, 0};
 }
 
 void write_svg(std::ostream& out, std::span<const Point2> points, const VoronoiDiagram& d) {
@@ -302,25 +262,26 @@ void write_svg(std::ostream& out, std::span<const Point2> points, const VoronoiD
     };
     for (const Point2& p : points) extend(p);
     for (const Point2& v : d.vertices) extend(v);
-    const Picture f(xmin, ymin, xmax, ymax, 0.08, 0.5);
+    const Picture f(detail::svg_box(xmin, ymin, xmax, ymax));
     const std::vector<std::uint8_t> repeated = repeated_points(points);
     const auto bounded = [&](std::size_t i) { return !d.unbounded[i]; };
     const auto rays_and_bisectors = [&](PathGroup& g) {
-        XY a{}, b{};
+        Point2 a{}, b{};
         // Each hull edge's ray is the exit ray of the cell it ends in (and the entry ray
-        // of the next): the exit rays draw each once.
+        // of the next): the exit rays draw each once, to the picture's edge.
         for (std::size_t i = 0; i < d.site_count(); ++i) {
             const auto c = d.cell(i);
-            const XY u = direction(d.exit_ray[i]);
+            const Point2 u = direction(d.exit_ray[i]);
             if (repeated[i] || !d.unbounded[i] || c.empty() || (u.x == 0 && u.y == 0)) continue;
-            if (f.clip(f(d.vertices[c.back()]), u, 0, a, b)) g.segment(a, b);
+            if (f.clip(d.vertices[c.back()], u, 0, a, b)) g.segment(a, b);
         }
-        // Collinear: the perpendicular bisector of each pair of neighbours on the line.
+        // Collinear: the perpendicular bisector of each pair of neighbours on the line
+        // (halves: no difference or sum can overflow).
         for (std::size_t k = 1; k < d.chain.size(); ++k) {
-            const XY p = f(points[d.chain[k - 1]]), q = f(points[d.chain[k]]);
-            const XY u{p.y - q.y, q.x - p.x};
-            if (u.x == 0 && u.y == 0) continue;  // too close to tell apart in the picture
-            const XY m{p.x / 2 + q.x / 2, p.y / 2 + q.y / 2};
+            const Point2 p = points[d.chain[k - 1]], q = points[d.chain[k]];
+            const Point2 u = direction({p.y / 2 - q.y / 2, q.x / 2 - p.x / 2});
+            if (u.x == 0 && u.y == 0) continue;
+            const Point2 m{p.x / 2 + q.x / 2, p.y / 2 + q.y / 2};
             if (f.clip(m, u, -std::numeric_limits<double>::infinity(), a, b)) g.segment(a, b);
         }
     };
@@ -329,15 +290,13 @@ void write_svg(std::ostream& out, std::span<const Point2> points, const VoronoiD
 
 void write_svg(std::ostream& out, std::span<const Point2> points, const ClippedVoronoi& d,
                const Box& box) {
-    const Picture f(box.xmin, box.ymin, box.xmax, box.ymax, 0, 0);
+    const Picture f(detail::SvgBox{box.xmin, box.ymin, box.xmax, box.ymax});
     std::vector<std::uint8_t> inside(points.size());
     for (std::size_t i = 0; i < points.size(); ++i) {
         const Point2 p = points[i];
         inside[i] = p.x >= box.xmin && p.x <= box.xmax && p.y >= box.ymin && p.y <= box.ymax;
     }
-    const auto frame = [&](PathGroup& g) {
-        g.rectangle(f({box.xmin, box.ymax}), f({box.xmax, box.ymin}));
-    };
+    const auto frame = [&](PathGroup& g) { g.rectangle(f.box()); };
     // A clipped cell is a closed polygon.
     draw(
         out, points, d, d.voronoi_vertex_count, f, [](std::size_t) { return true; }, frame,
@@ -355,12 +314,20 @@ std::string_view extension(std::string_view path) {
 }  // namespace
 
 std::string_view to_string(VoronoiFormat f) noexcept {
-    return f == VoronoiFormat::svg ? "svg" : "json";
+    switch (f) {
+        case VoronoiFormat::json: return "json";
+        case VoronoiFormat::svg: return "svg";
+        case VoronoiFormat::geojson: return "geojson";
+        case VoronoiFormat::wkt: return "wkt";
+    }
+    return "?";
 }
 
 std::optional<VoronoiFormat> voronoi_format_from_name(std::string_view name) {
-    if (name == "json") return VoronoiFormat::json;
-    if (name == "svg") return VoronoiFormat::svg;
+    for (VoronoiFormat f :
+         {VoronoiFormat::json, VoronoiFormat::svg, VoronoiFormat::geojson, VoronoiFormat::wkt}) {
+        if (to_string(f) == name) return f;
+    }
     return std::nullopt;
 }
 
@@ -368,16 +335,44 @@ std::optional<VoronoiFormat> voronoi_format_from_path(std::string_view path) {
     return voronoi_format_from_name(extension(path));
 }
 
+bool holds_unbounded_cells(VoronoiFormat format) noexcept {
+    return format == VoronoiFormat::json || format == VoronoiFormat::svg;
+}
+
+Box default_clip_box(std::span<const Point2> sites) {
+    if (sites.empty()) return {-1, -1, 1, 1};
+    double x0 = sites[0].x, x1 = sites[0].x, y0 = sites[0].y, y1 = sites[0].y;
+    for (const Point2& p : sites) {
+        x0 = std::min(x0, p.x);
+        x1 = std::max(x1, p.x);
+        y0 = std::min(y0, p.y);
+        y1 = std::max(y1, p.y);
+    }
+    const double side = std::max(detail::finite_span(x1 - x0), detail::finite_span(y1 - y0));
+    const double margin = side > 0 ? default_clip_margin * side : 1;
+    detail::widen(x0, x1, margin);
+    detail::widen(y0, y1, margin);
+    return {x0, y0, x1, y1};
+}
+
 void write_voronoi(std::ostream& out, std::span<const Point2> points, const VoronoiDiagram& diagram,
                    VoronoiFormat format) {
+    if (!holds_unbounded_cells(format)) {
+        throw std::invalid_argument("write_voronoi: the " + std::string(to_string(format)) +
+                                    " format needs a clipped diagram (polygons)");
+    }
     if (format == VoronoiFormat::svg) return write_svg(out, points, diagram);
     write_json(out, diagram);
 }
 
 void write_voronoi(std::ostream& out, std::span<const Point2> points, const ClippedVoronoi& diagram,
                    const Box& box, VoronoiFormat format) {
-    if (format == VoronoiFormat::svg) return write_svg(out, points, diagram, box);
-    write_json(out, diagram);
+    switch (format) {
+        case VoronoiFormat::json: return write_json(out, diagram);
+        case VoronoiFormat::svg: return write_svg(out, points, diagram, box);
+        case VoronoiFormat::geojson: return detail::write_voronoi_geojson(out, diagram, box);
+        case VoronoiFormat::wkt: return detail::write_voronoi_wkt(out, diagram);
+    }
 }
 
 }  // namespace exidel::io

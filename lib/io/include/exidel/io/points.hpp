@@ -12,6 +12,7 @@
 //         error. Wider files (an id, a label, then x and y): ReadOptions::columns picks
 //         the two fields by number or by header name; every line then has the field
 //         count of the first, and the fields not picked may be anything, empty included.
+//         A third column (X,Y,Z) is read as z (PointFile::z): a finite number, as x and y.
 //   json  (.json) exactly a JSON array of [x, y] pairs: [[0, 0], [1, 0.5]]. Numbers use
 //         JSON's grammar (no hex, no NaN/Infinity, no leading '+' or zeros); nothing but
 //         whitespace may follow the closing bracket. An empty file is 0 points.
@@ -22,6 +23,16 @@
 //         must be finite numbers and markers integers; they are checked and dropped.
 //   f64   (.f64) raw little-endian IEEE binary64 pairs x0 y0 x1 y1 ...; the byte count
 //         must be a multiple of 16.
+//   geojson  (.geojson) RFC 7946: a FeatureCollection, a Feature, or a bare geometry, of
+//         Point and MultiPoint geometries (also inside a GeometryCollection), in document
+//         order. A feature whose geometry is null (unlocated) is skipped; any other
+//         geometry type is an error naming the feature ("feature 3: geometry type
+//         'Polygon' is not supported"). Positions are [x, y] or [x, y, z]; z
+//         (PointFile::z) is the third coordinate when every position has one (some with
+//         and some without is an error), or with ReadOptions::z_property that property of
+//         each feature, which must be a number (missing or not a number: an error naming
+//         the feature). Strict JSON (RFC 8259): malformed text is a ReadError with its
+//         line; unknown members (bbox, crs, id, other properties) are ignored.
 //
 // Coordinates in the text formats are decimal or C99 hexadecimal floats (json: decimal
 // only), rounded to the nearest double (exidel/io/number.hpp). Every format rejects NaN
@@ -43,12 +54,12 @@
 
 namespace exidel::io {
 
-enum class PointFormat { xy, json, node, f64 };
+enum class PointFormat { xy, json, node, f64, geojson };
 
 std::string_view to_string(PointFormat f) noexcept;
-/// "xy", "json", "node", "f64"; nullopt for anything else.
+/// "xy", "json", "node", "f64", "geojson"; nullopt for anything else.
 std::optional<PointFormat> point_format_from_name(std::string_view name);
-/// From the extension of `path` (case-sensitive: .txt .xy .csv .json .node .f64);
+/// From the extension of `path` (case-sensitive: .txt .xy .csv .json .node .f64 .geojson);
 /// xy when the extension is none of these.
 PointFormat point_format_from_path(std::string_view path);
 
@@ -72,13 +83,14 @@ private:
     std::string reason_;
 };
 
-/// Which two fields of an xy line are x and y: each a field number counted from 1 (as
-/// `cut -f` counts) or a name of the header line.
+/// Which two fields of an xy line are x and y, and optionally which one is z: each a field
+/// number counted from 1 (as `cut -f` counts) or a name of the header line.
 struct Columns {
     std::string x, y;
+    std::optional<std::string> z{};
 };
-/// "X,Y" (e.g. "2,3" or "lon,lat") to Columns; nullopt with `error` set when it is not
-/// two non-empty items, or a number is 0.
+/// "X,Y" or "X,Y,Z" (e.g. "2,3", "lon,lat" or "lon,lat,height") to Columns; nullopt with
+/// `error` set when it is not two or three non-empty items, or a number is 0.
 std::optional<Columns> parse_columns(std::string_view spec, std::string& error);
 
 struct ReadOptions {
@@ -86,18 +98,23 @@ struct ReadOptions {
     /// xy: threads that parse parts of a large input (above 1 MiB) at once. The points,
     /// and the line of the first error, do not depend on it.
     unsigned threads = 1;
+    /// geojson only: z is this property of each feature (a number), not the positions'
+    /// third coordinates.
+    std::optional<std::string> z_property{};
 };
 
-/// A point file's contents: the points, and the first vertex index of a .node file (0
-/// or 1; 0 for every other format), so that a .ele written for it counts the same way.
+/// A point file's contents: the points, the first vertex index of a .node file (0 or 1;
+/// 0 for every other format), so that a .ele written for it counts the same way, and a z
+/// value per point when the input has them (xy with a third column, geojson), else empty.
 struct PointFile {
     std::vector<Point2> points;
     unsigned index_base = 0;
+    std::vector<double> z{};
 };
 
 /// Parses the whole of `data` (a file's bytes) as points in `format`, in input order.
 /// Throws ReadError on malformed input, std::invalid_argument when `options` do not apply
-/// to `format` (columns for anything but xy).
+/// to `format` (columns for anything but xy, z_property for anything but geojson).
 PointFile parse_point_file(std::string_view data, PointFormat format,
                            const ReadOptions& options = {});
 /// The points alone.

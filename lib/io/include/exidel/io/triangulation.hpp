@@ -14,15 +14,52 @@
 //         base of the .node the points came from, so the pair stays consistent. Pair it
 //         with a .node of the input in input order (write_points with PointFormat::node
 //         and the same base writes one).
-//   off   OFF: "OFF", "nvertices nfaces 0", every input point as "x y 0" (duplicates
-//         included, so face indices are input indices), then "3 v0 v1 v2" per triangle.
-//   svg   a picture: triangles, the hull drawn thicker, the points as dots; scaled into a
-//         viewBox about 1000 units wide with y flipped so that up is up. For looking at,
-//         not for reading back (coordinates are rounded to 0.001 of the viewBox). Paths
-//         hold at most svg_path_items triangles (hull vertices, points) each: XML parsers
-//         cap an attribute's length (libxml2, under librsvg, at 10 MB), which one path of
-//         every triangle passes near 10^5 points, and librsvg refuses more than 10^6
-//         elements, which one element per point passes at 10^6 points.
+//   off   OFF: "OFF", "nvertices nfaces 0", every input point as "x y z" (z from
+//         WriteOptions::z, else 0; duplicates included, so face indices are input
+//         indices), then "3 v0 v1 v2" per triangle.
+//   svg   a picture in the data's own coordinates: the viewBox is the points' bounding
+//         box in input units (x = min x, y = -max y, width and height the box's sides;
+//         padded only where a side is zero: that side as long as the other, or one unit
+//         around a single point), and a <g transform="scale(1,-1)"> flips y so that up is
+//         up and the coordinates are written as they are, each the shortest decimal that
+//         reads back as the same double: a GIS or a browser can overlay the picture on
+//         other data. width and height attributes put the larger side at 1000 pixels,
+//         and stroke widths are pixels of that picture in data units (a 2-pixel line is
+//         2/1000 of the larger side), so that lines and dots look the same at any scale
+//         of the data (vector-effect="non-scaling-stroke" would do it for a zooming
+//         viewer, but librsvg before 2.56 ignores it). The triangles as the hull's fill
+//         and every edge once (in trails: about one vertex written per edge, half of what
+//         writing each triangle's corners costs), the hull drawn thicker, the points as
+//         dots (zero-length round-capped subpaths). Paths hold at most svg_path_items
+//         edges (hull vertices, points) each, about 40 kB of attribute: XML parsers cap an
+//         attribute's length (libxml2, under librsvg, at 10 MB), which one path of every
+//         edge passes near 10^5 points; librsvg 2.54 also stopped reading ("Premature
+//         end of data") some files of 120 kB attributes; and librsvg refuses more than
+//         10^6 elements, which one element per point passes at 10^6 points.
+//   geojson  RFC 7946: a FeatureCollection, one Feature per line. Feature t (t from 0) is
+//         triangle t: a Polygon whose one ring is the triangle counter-clockwise and
+//         closed (first position repeated last), properties {"triangle": t, "vertices":
+//         [i, j, k]} (input indices). After the triangles, one Feature for the hull:
+//         properties {"hull": true, "vertices": [hull indices]}, geometry the hull's
+//         Polygon (counter-clockwise); for input without triangles the chain of its
+//         distinct points as a LineString, or a Point for one distinct point, and no
+//         hull Feature (an empty FeatureCollection) for no points. Positions are [x, y],
+//         or [x, y, z] with WriteOptions::z; numbers are the shortest decimals that read
+//         back as the same doubles (negative zero "-0.0").
+//   wkt   one MULTIPOLYGON of every triangle, one per line, polygon t being triangle t
+//         (counter-clockwise, closed): "MULTIPOLYGON (((x y, x y, x y, x y)),\n((...)))";
+//         "MULTIPOLYGON Z" with "x y z" positions when WriteOptions::z is given;
+//         "MULTIPOLYGON EMPTY" ("MULTIPOLYGON Z EMPTY") when there are no triangles.
+//   ply   PLY, binary_little_endian 1.0 (ply) or ascii 1.0 (ply-ascii): "element vertex
+//         n" with "property double x", "y", "z" (z from WriteOptions::z, else 0), every
+//         input point in input order (duplicates included, so face indices are input
+//         indices), then "element face" with "property list uchar int vertex_indices",
+//         one face of three per triangle, counter-clockwise.
+//
+// Coordinates in json-like and text formats (off, geojson, wkt, ply-ascii) are the
+// shortest decimals that read back as the same doubles (std::to_chars), never rounded.
+// Longitude and latitude are triangulated as a plane: there is no handling of the
+// antimeridian or the poles.
 #pragma once
 
 #include <cstddef>
@@ -36,25 +73,30 @@
 
 namespace exidel::io {
 
-enum class TriangulationFormat { json, ele, off, svg };
+enum class TriangulationFormat { json, ele, off, svg, geojson, wkt, ply, ply_ascii };
 
 std::string_view to_string(TriangulationFormat f) noexcept;
-/// "json", "ele", "off", "svg"; nullopt for anything else.
+/// "json", "ele", "off", "svg", "geojson", "wkt", "ply", "ply-ascii"; nullopt for anything
+/// else.
 std::optional<TriangulationFormat> triangulation_format_from_name(std::string_view name);
-/// From the extension of `path` (.json .ele .off .svg); nullopt for any other.
+/// From the extension of `path` (.json .ele .off .svg .geojson .wkt .ply, the last binary
+/// PLY); nullopt for any other.
 std::optional<TriangulationFormat> triangulation_format_from_path(std::string_view path);
 
 struct WriteOptions {
     unsigned index_base = 0;  // ele: the number of the first vertex and triangle (0 or 1)
     /// json: threads that format parts of the arrays at once (the text is the same).
     unsigned threads = 1;
+    /// off, geojson, wkt, ply: a z value per point (PointFile::z), or empty for none.
+    std::span<const double> z{};
 };
 
-/// Triangles (or hull vertices) per SVG path element: about 40 kB of attribute each.
+/// Edges (hull vertices, points) per SVG path element: about 40 kB of attribute each.
 inline constexpr std::size_t svg_path_items = 1000;
 
-/// Writes `tri`, the triangulation of `points`, in `format`. Only off and svg use the
-/// coordinates.
+/// Writes `tri`, the triangulation of `points`, in `format`. json and ele do not use the
+/// coordinates. Throws std::invalid_argument when options.z is neither empty nor of
+/// points.size() values.
 void write_triangulation(std::ostream& out, std::span<const Point2> points,
                          const delaunay::Triangulation& tri, TriangulationFormat format,
                          const WriteOptions& options = {});

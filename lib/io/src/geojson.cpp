@@ -1,0 +1,181 @@
+// exidel I/O: the GeoJSON (RFC 7946) and WKT writers of triangulations and clipped Voronoi
+// diagrams (formats: exidel/io/triangulation.hpp, exidel/io/voronoi.hpp).
+#include <cstdint>
+#include <ostream>
+#include <span>
+#include <string_view>
+
+#include "text.hpp"
+#include "writers.hpp"
+
+namespace exidel::io::detail {
+
+namespace {
+
+using delaunay::ClippedVoronoi;
+using delaunay::Triangulation;
+
+// [x, y] or [x, y, z] of point i.
+void position(NumberWriter& w, std::span<const Point2> points, std::span<const double> z,
+              std::uint32_t i) {
+    w.text("[");
+    json_number(w, points[i].x);
+    w.text(", ");
+    json_number(w, points[i].y);
+    if (!z.empty()) {
+        w.text(", ");
+        json_number(w, z[i]);
+    }
+    w.text("]");
+}
+
+// "[[p, q, ..., p]]": the closed ring through `ring` (at least three vertices).
+template <class Ring, class Position>
+void polygon_coordinates(NumberWriter& w, const Ring& ring, Position pos) {
+    w.text("[[");
+    for (const std::uint32_t v : ring) {
+        pos(v);
+        w.text(", ");
+    }
+    pos(ring[0]);
+    w.text("]]");
+}
+
+void index_array(NumberWriter& w, std::span<const std::uint32_t> v) {
+    w.text("[");
+    for (std::size_t k = 0; k < v.size(); ++k) {
+        w.text(k ? ", " : "").number(static_cast<std::uint64_t>(v[k]));
+    }
+    w.text("]");
+}
+
+// "x y" or "x y z" of point i, as WKT writes a position.
+void wkt_position(NumberWriter& w, std::span<const Point2> points, std::span<const double> z,
+                  std::uint32_t i) {
+    w.number(points[i].x).text(" ").number(points[i].y);
+    if (!z.empty()) w.text(" ").number(z[i]);
+}
+
+}  // namespace
+
+void write_triangulation_geojson(std::ostream& out, std::span<const Point2> points,
+                                 const Triangulation& tri, std::span<const double> z) {
+    NumberWriter w(out);
+    const auto pos = [&](std::uint32_t v) { position(w, points, z, v); };
+    w.text("{\"type\": \"FeatureCollection\", \"features\": [");
+    const std::size_t n = tri.triangle_count();
+    for (std::size_t t = 0; t < n; ++t) {
+        const std::span<const std::uint32_t> corners(tri.triangles.data() + 3 * t, 3);
+        w.text(t ? ",\n" : "\n")
+            .text("{\"type\": \"Feature\", \"properties\": {\"triangle\": ")
+            .number(static_cast<std::uint64_t>(t))
+            .text(", \"vertices\": ");
+        index_array(w, corners);
+        w.text("}, \"geometry\": {\"type\": \"Polygon\", \"coordinates\": ");
+        polygon_coordinates(w, corners, pos);
+        w.text("}}");
+    }
+    // The hull: the boundary polygon, or for input without triangles the chain of its
+    // distinct points (a LineString), or its one point.
+    const std::span<const std::uint32_t> hull(tri.hull);
+    if (!hull.empty()) {
+        w.text(n ? ",\n" : "\n")
+            .text("{\"type\": \"Feature\", \"properties\": {\"hull\": true, \"vertices\": ");
+        index_array(w, hull);
+        w.text("}, \"geometry\": {\"type\": ");
+        if (!tri.collinear) {
+            w.text("\"Polygon\", \"coordinates\": ");
+            polygon_coordinates(w, hull, pos);
+        } else if (hull.size() == 1) {
+            w.text("\"Point\", \"coordinates\": ");
+            pos(hull[0]);
+        } else {
+            w.text("\"LineString\", \"coordinates\": [");
+            for (std::size_t k = 0; k < hull.size(); ++k) {
+                w.text(k ? ", " : "");
+                pos(hull[k]);
+            }
+            w.text("]");
+        }
+        w.text("}}");
+    }
+    w.text(n || !hull.empty() ? "\n]}\n" : "]}\n");
+}
+
+void write_triangulation_wkt(std::ostream& out, std::span<const Point2> points,
+                             const Triangulation& tri, std::span<const double> z) {
+    NumberWriter w(out);
+    w.text(z.empty() ? "MULTIPOLYGON" : "MULTIPOLYGON Z");
+    const std::size_t n = tri.triangle_count();
+    if (n == 0) {
+        w.text(" EMPTY\n");
+        return;
+    }
+    w.text(" (");
+    for (std::size_t t = 0; t < n; ++t) {
+        w.text(t ? ",\n(" : "(").text("(");
+        for (std::size_t k = 0; k <= 3; ++k) {
+            if (k) w.text(", ");
+            wkt_position(w, points, z, tri.triangles[3 * t + k % 3]);
+        }
+        w.text("))");
+    }
+    w.text(")\n");
+}
+
+void write_voronoi_geojson(std::ostream& out, const ClippedVoronoi& d, const delaunay::Box& box) {
+    NumberWriter w(out);
+    const std::span<const Point2> vertices(d.vertices);
+    const auto pos = [&](std::uint32_t v) { position(w, vertices, {}, v); };
+    w.text("{\"type\": \"FeatureCollection\", \"bbox\": [");
+    json_number(w, box.xmin);
+    w.text(", ");
+    json_number(w, box.ymin);
+    w.text(", ");
+    json_number(w, box.xmax);
+    w.text(", ");
+    json_number(w, box.ymax);
+    w.text("], \"features\": [");
+    for (std::size_t i = 0; i < d.site_count(); ++i) {
+        const auto cell = d.cell(i);
+        w.text(i ? ",\n" : "\n")
+            .text("{\"type\": \"Feature\", \"properties\": {\"site\": ")
+            .number(static_cast<std::uint64_t>(i))
+            .text("}, \"geometry\": ");
+        if (cell.size() < 3) {
+            w.text("null}");  // the cell misses the box
+            continue;
+        }
+        w.text("{\"type\": \"Polygon\", \"coordinates\": ");
+        polygon_coordinates(w, cell, pos);
+        w.text("}}");
+    }
+    w.text(d.site_count() ? "\n]}\n" : "]}\n");
+}
+
+void write_voronoi_wkt(std::ostream& out, const ClippedVoronoi& d) {
+    NumberWriter w(out);
+    if (d.site_count() == 0) {
+        w.text("GEOMETRYCOLLECTION EMPTY\n");
+        return;
+    }
+    const std::span<const Point2> vertices(d.vertices);
+    w.text("GEOMETRYCOLLECTION (");
+    for (std::size_t i = 0; i < d.site_count(); ++i) {
+        const auto cell = d.cell(i);
+        w.text(i ? ",\nPOLYGON " : "POLYGON ");
+        if (cell.size() < 3) {
+            w.text("EMPTY");
+            continue;
+        }
+        w.text("((");
+        for (std::size_t k = 0; k <= cell.size(); ++k) {
+            if (k) w.text(", ");
+            wkt_position(w, vertices, {}, cell[k % cell.size()]);
+        }
+        w.text("))");
+    }
+    w.text(")\n");
+}
+
+}  // namespace exidel::io::detail
