@@ -168,6 +168,35 @@ def test_custom_failure_map_conventions(exidel_cli, tmp_path):
     assert m.x.min() < 0 < m.x.max() and m.y.min() < 0 < m.y.max()
 
 
+def test_custom_failure_map_is_centred_unless_it_asks_for_the_corner(exidel_cli, tmp_path):
+    """No window keyword: centred on the moving point (its unmoved, exactly collinear
+    configuration at the centre cell), in Python and in the command alike; corner=True and
+    centered=False: the point at cell (0, 0)."""
+    spec = dict(predicate="orient2d", points=[(0.5, 0.5), (12.0, 12.0), (24.0, 24.0)], width=24,
+                height=16)
+    m = research.compute_failure_map(**spec)
+    assert m.offsets_x[12] == 0 and m.offsets_y[8] == 0 and m.exact[8, 12] == 0
+    assert m.exact[0, 0] != 0
+    c = research.compute_failure_map(**spec, corner=True)
+    assert np.array_equal(c.offsets_x, np.arange(24)) and np.array_equal(c.offsets_y, np.arange(16))
+    assert c.exact[0, 0] == 0 and not np.array_equal(c.exact, m.exact)
+    assert np.array_equal(research.compute_failure_map(**spec, centered=False).exact, c.exact)
+    assert np.array_equal(research.compute_failure_map(**spec, centered=True).exact, m.exact)
+    with pytest.raises(ValueError, match="give one"):
+        research.compute_failure_map(**spec, centered=True, corner=True)
+    windows = [({}, m, "--centered"), ({"centered": True}, m, "--centered"),
+               ({"corner": True}, c, "--corner"), ({"centered": False}, c, "--corner"),
+               ({"corner": False}, m, "--centered")]
+    for k, (window, expected, flag) in enumerate(windows):
+        r = research.failure_map(tmp_path / str(k), kernel=["adaptive"], **spec, **window)
+        _, exact, _ = panels(tmp_path / str(k) / "custom-adaptive.png", 24, 16)
+        assert np.array_equal(exact, colours(expected.exact)), window
+        rerun = r.report.read_text().split("Rerun: `", 1)[1].split("`", 1)[0]
+        assert f" {flag} " in rerun, (window, rerun)
+    with pytest.raises(TypeError, match="give one"):
+        research.failure_map(tmp_path / "x", **spec, centered=True, corner=True)
+
+
 def test_exact_kernels_agree_and_presets_match_the_command(exidel_cli):
     for preset in ("kettner2", "incircle-s24", "cosine-s12"):
         spec = dict(research.failure_map_preset(preset), width=64, height=48)

@@ -2,6 +2,8 @@
 // they write (PNG, report, fixtures) can be read back and reproduces.
 #include <sys/wait.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -11,11 +13,14 @@
 #include <sstream>
 #include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "exidel/predicates/build_info.hpp"
 #include "exidel/research/studies.hpp"
+#include "exidel/testing/ulp.hpp"
 
 namespace exidel::research {
 namespace {
@@ -565,6 +570,84 @@ TEST(FailureMap, CommandLineDrawsACustomSpaceMap) {
 #endif
 }
 
+// A custom map's window is centred on the moving point unless it asks for the corner:
+// the centred map is the corner map of the point moved back by half the window, its
+// centre cell the unmoved (exactly degenerate) configuration. The presets keep their own
+// windows: Kettner's at the corner (as the paper draws them), the others centred.
+TEST(FailureMap, ACustomMapIsCentredByDefaultAndTheCornerIsTheShiftedWindow) {
+    FailureMapSpec centred;
+    EXPECT_TRUE(centred.centered);
+    centred.name = "custom";
+    centred.points = {{0.5, 0.5}, {12, 12}, {24, 24}};  // exactly collinear
+    centred.order = {0, 1, 2};
+    centred.width = 24;
+    centred.height = 15;
+    FailureMapSpec corner = centred;
+    corner.centered = false;
+    corner.points[0] = {testing::nudge(0.5, -12), testing::nudge(0.5, -7)};
+    const FailureMap a = compute_failure_map(centred, DoubleKernel{}, 2);
+    const FailureMap b = compute_failure_map(corner, DoubleKernel{}, 2);
+    EXPECT_EQ(a.signs, b.signs);
+    EXPECT_EQ(a.exact, b.exact);
+    EXPECT_EQ(a.exact[7 * 24 + 12], Sign::zero);  // the centre cell: p itself
+    EXPECT_NE(a.exact[0], Sign::zero);
+    // The same points with the corner window: p at cell (0, 0).
+    corner.points = centred.points;
+    const FailureMap c = compute_failure_map(corner, DoubleKernel{}, 2);
+    EXPECT_EQ(c.exact[0], Sign::zero);
+    EXPECT_NE(c.exact, a.exact);
+
+    for (const FailureMapSpec& s : failure_map_presets())
+        EXPECT_EQ(s.centered, !s.name.starts_with("kettner")) << s.name;
+}
+
+// From the command line: no flag and --centered draw the centred window, --corner the
+// moving point at the corner, each picture the library's for that window, and the report's
+// rerun line names the window and writes the same picture again.
+TEST(FailureMap, CommandLineCentresACustomMapAndCornerKeepsTheCornerWindow) {
+#ifdef EXIDEL_CLI_PATH
+    const std::string map =
+        "study failure-map --predicate orient2d --points '0.5,0.5;12,12;24,24' --width 24 "
+        "--height 16 --kernel adaptive --no-progress --out ";
+    FailureMapSpec spec;
+    spec.name = "custom";
+    spec.points = {{0.5, 0.5}, {12, 12}, {24, 24}};
+    spec.order = {0, 1, 2};
+    spec.width = 24;
+    spec.height = 16;
+    const auto picture = [](bool centered, FailureMapSpec s) {
+        s.centered = centered;
+        return render_failure_map(compute_failure_map(s, AdaptiveKernel{}, 1)).pixels;
+    };
+    const std::string png = "custom-adaptive.png";
+    for (const auto& [flag, centered] :
+         {std::pair<std::string, bool>{"", true}, {" --centered", true}, {" --corner", false}}) {
+        const fs::path out = work_dir("failure_map_window" + (flag.empty() ? "" : flag.substr(3)));
+        ASSERT_EQ(run_cli(map + out.string() + flag), 0) << flag;
+        EXPECT_EQ(read_png(out / png).pixels, picture(centered, spec)) << flag;
+        EXPECT_NE(read_png(out / png).pixels, picture(!centered, spec)) << flag;
+        const std::string report = read_file(out / "report.md");
+        const std::string rerun = line_after(report, std::string(rerun_prefix));
+        const std::string command = rerun.substr(0, rerun.find('`'));
+        EXPECT_NE(command.find(centered ? " --centered" : " --corner"), std::string::npos)
+            << command;
+        EXPECT_NE(report.find(centered ? "the window centred on it" : "from the window's corner"),
+                  std::string::npos);
+        const std::string first = read_file(out / png);
+        fs::remove(out / png);
+        ASSERT_EQ(run_cli(command.substr(std::string("exidel ").size())), 0) << command;
+        EXPECT_EQ(read_file(out / png), first) << command;
+    }
+    const std::string out = work_dir("failure_map_window_errors").string();
+    EXPECT_EQ(run_cli(map + out + " --centered --corner"), 2);
+    EXPECT_EQ(run_cli("study failure-map --preset kettner1 --corner --out " + out), 2);
+    EXPECT_EQ(run_cli("study all --corner --out " + out), 2);
+    EXPECT_NE(cli_output("study --help").find("--corner"), std::string::npos);
+#else
+    GTEST_SKIP() << "the exidel binary is not built";
+#endif
+}
+
 // The study runs the algorithms of the registry by name: "all" is every one, in registry
 // order; an algorithm with insertion orders runs once per order, any other once; every
 // run of the study names its algorithm.
@@ -937,7 +1020,7 @@ TEST(Reproducibility, OneStudysRerunLineHasEveryOptionThatChangesAResult) {
     EXPECT_EQ(line_after(report, std::string(rerun_prefix))
                   .substr(0, line_after(report, std::string(rerun_prefix)).find('`')),
               "exidel study failure-map --seed 20250704 --kernel double --predicate orient2d "
-              "--points '0.5,0.5;12,12;24,24' --width 16 --height 8 --out 'my maps'");
+              "--points '0.5,0.5;12,12;24,24' --centered --width 16 --height 8 --out 'my maps'");
     EXPECT_EQ(without_lines(report, timing_prefix).second, 1);
 #endif
 }
