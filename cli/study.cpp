@@ -28,7 +28,9 @@ report.md starts with the command that writes the same files again):
   failure-map    one predicate while one point moves over a grid of ulp steps
                  (Kettner et al. 2008): a PNG per preset and kernel, sign counts
   precision      wrong-sign rate of MPFR at p bits vs the exact kernel, per
-                 formulation and near-degenerate family; plot + threshold table
+                 formulation and near-degenerate family: threshold table, and
+                 precision.svg and precision.png, one panel per formulation with
+                 one line per family
   triangulation  every kernel x in-circle policy x family: certified Delaunay, valid
                  but not Delaunay, invalid, or failure; minimal failing fixtures; the
                  work (flips, predicate calls) of each algorithm and insertion order;

@@ -261,6 +261,26 @@ def test_precision_study_and_its_rerun_line(exidel_cli, tmp_path):
     assert {f.name: f.read_bytes() for f in out.glob("*.csv")} == before
 
 
+def test_precision_plot_is_one_line_per_family_as_svg_and_png(exidel_cli, tmp_path):
+    """precision.svg parsed as XML: a panel per formulation, a series per family in each;
+    precision.png decoded by Pillow (through matplotlib) at twice the SVG's size."""
+    import xml.etree.ElementTree as ET
+    import matplotlib.image
+    families = ["near_integer_grid", "near_dyadic_line", "kettner"]
+    research.precision(tmp_path, bits=[24, 53, 64], families=families, samples=40)
+    ns = {"s": "http://www.w3.org/2000/svg"}
+    svg = ET.parse(tmp_path / "precision.svg").getroot()
+    panels = svg.findall("s:g[@class='panel']", ns)
+    assert [p.find("s:title", ns).text for p in panels] == ["orient2d", "incircle", "incircle_cosine"]
+    for p in panels:
+        series = p.findall("s:g[@class='series']", ns)
+        assert [g.find("s:title", ns).text for g in series] == families
+        assert all(len(g.find("s:polyline", ns).get("points").split()) == 3 for g in series)
+    rgb = matplotlib.image.imread(tmp_path / "precision.png")
+    assert rgb.shape[:2] == (2 * int(float(svg.get("height"))), 2 * int(float(svg.get("width"))))
+    assert len(np.unique((rgb[..., :3] * 255).round().reshape(-1, 3), axis=0)) > 5
+
+
 def test_triangulation_study_and_replay_of_its_fixtures(exidel_cli, tmp_path):
     r = research.run("triangulation", tmp_path / "tri", quick=True, kernel=["double", "adaptive"],
                      families="uniform_scaled,kettner", seeds=2, sizes=[30], algorithm="external",
