@@ -28,7 +28,9 @@ report.md starts with the command that writes the same files again):
   failure-map    one predicate while one point moves over a grid of ulp steps
                  (Kettner et al. 2008): a PNG per preset and kernel, sign counts
   precision      wrong-sign rate of MPFR at p bits vs the exact kernel, per
-                 formulation and near-degenerate family; plot + threshold table
+                 formulation and near-degenerate family: threshold table, and
+                 precision.svg and precision.png, one panel per formulation with
+                 one line per family
   triangulation  every kernel x in-circle policy x family: certified Delaunay, valid
                  but not Delaunay, invalid, or failure; minimal failing fixtures; the
                  work (flips, predicate calls) of each algorithm and insertion order;
@@ -67,7 +69,11 @@ failure-map:
   --order LIST    argument order, e.g. 1,2,0 evaluates orient2d(q, r, p): the
                   floating formulas subtract their first argument (orient2d) or the
                   last (the others) (default: 0,1,2[,3[,4]])
-  --step S        ulps per cell (default 1);  --centered  window around the point
+  --step S        ulps per cell (default 1)
+  --centered      the window around the moving point: offsets [-W/2, W/2) x
+                  [-H/2, H/2), the point at the centre cell (the default)
+  --corner        the moving point at the window's bottom-left corner instead:
+                  offsets [0, W) x [0, H) (presets keep their own window)
 
 precision:
   --bits LIST     precisions (default 24..128 every 8, 53, 106, then 160..512)
@@ -182,7 +188,7 @@ struct Parsed {
     std::optional<std::string> presets, kernels, predicate, points, move, axes, order, families,
         bits, sizes, input, incircle, algorithms;
     std::optional<std::uint64_t> width, height, step, samples, seeds, size, shrink;
-    bool centered = false, list_presets = false;
+    bool centered = false, corner = false, list_presets = false;
 };
 
 // Declares the options of every study; they fill `p` as given.
@@ -233,6 +239,7 @@ void add_options(CLI::App& app, Parsed& p) {
         number(name, *target, max);
     }
     app.add_flag("--centered", p.centered);
+    app.add_flag("--corner", p.corner);
     app.add_flag("--list-presets", p.list_presets);
 }
 
@@ -267,13 +274,20 @@ research::FailureMapOptions failure_map_options(const Parsed& p) {
         for (std::size_t i = 0; i < s.order.size(); ++i) s.order[i] = i;
         if (p.order) s.order = parse_list(*p.order, "--order", last);
         if (p.step) s.step = std::int64_t(*p.step);
-        s.centered = p.centered;
+        if (p.centered && p.corner)
+            throw std::invalid_argument("--centered and --corner choose different windows");
+        s.centered = !p.corner;
         s.description =
             "custom " + std::string(s.predicate()) + " map, point " + std::to_string(s.pivot) +
             " moved" +
-            (s.space ? std::string(" in ") + "xyz"[s.axes[0]] + " and " + "xyz"[s.axes[1]] : "");
+            (s.space ? std::string(" in ") + "xyz"[s.axes[0]] + " and " + "xyz"[s.axes[1]] : "") +
+            (s.centered ? ", the window centred on it" : ", from the window's corner");
         research::validate(s);  // before any work: bad specs are usage errors
         o.specs.push_back(std::move(s));
+    } else if (p.corner) {
+        throw std::invalid_argument(
+            "--corner sets the window of a custom map (--predicate, --points); presets keep "
+            "their own");
     } else if (p.presets && *p.presets != "all") {
         for (const std::string& name : split(*p.presets, ','))
             o.specs.push_back(research::failure_map_preset(name));
@@ -289,7 +303,9 @@ research::FailureMapOptions failure_map_options(const Parsed& p) {
 
 /// The command line that reproduces a study's files: the study, then every option given
 /// that changes a result, in one fixed order, with --seed always (its default may change)
-/// and --out. --jobs, --no-progress and --list-presets change no file and are left out.
+/// and --out. A custom failure map names its window always (--centered or --corner, for the
+/// same reason). --jobs, --no-progress and --list-presets change no file and are left out,
+/// and so is --centered without a custom map (presets keep their own window).
 std::string rerun_command(const Parsed& p) {
     using research::shell_quote;
     std::string c = "exidel study " + p.study;
@@ -309,7 +325,8 @@ std::string rerun_command(const Parsed& p) {
     text("--axes", p.axes);
     text("--order", p.order);
     number("--step", p.step);
-    if (p.centered) c += " --centered";
+    if (p.study == "failure-map" && (p.predicate || p.points))
+        c += p.corner ? " --corner" : " --centered";
     number("--width", p.width);
     number("--height", p.height);
     text("--algorithm", p.algorithms);
@@ -406,7 +423,7 @@ int study_command(std::span<const std::string_view> args) {
             if (p.presets || p.kernels || p.predicate || p.points || p.move || p.axes || p.order ||
                 p.families || p.bits || p.sizes || p.input || p.incircle || p.algorithms ||
                 p.width || p.height || p.step || p.samples || p.seeds || p.size || p.shrink ||
-                p.centered || p.list_presets) {
+                p.centered || p.corner || p.list_presets) {
                 return cli.usage_error(
                     "study all takes only --out, --seed, --jobs, --quick and "
                     "--no-progress; give a study's own options to that study");

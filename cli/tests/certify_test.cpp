@@ -174,7 +174,8 @@ TEST(ExidelCertify, EveryProducersLayoutOfOneTriangulationCertifies) {
             << file;
         // Each convention shows as a note, and --quiet silences them.
         if (file.ends_with("delaunator.json")) {
-            EXPECT_NE(r.err.find("clockwise triangles turned counter-clockwise"), std::string::npos);
+            EXPECT_NE(r.err.find("clockwise triangles turned counter-clockwise"),
+                      std::string::npos);
             EXPECT_NE(r.err.find("later copy"), std::string::npos) << r.err;
             EXPECT_NE(r.err.find("hull ran clockwise"), std::string::npos) << r.err;
             EXPECT_EQ(certify("-q " + in + " " + file).err, "");
@@ -251,9 +252,9 @@ TEST(ExidelCertify, ACorruptedCopyGetsTheSameLocatedFindingsFromEveryLayout) {
         // The text form names the edge, its triangle and the point.
         const RunResult text = certify(in + " " + file + format_of(file));
         EXPECT_EQ(text.out.rfind("not_delaunay: edge (", 0), 0u) << text.out;
-        EXPECT_NE(text.out.find(") of triangle " + std::to_string(f.at("triangle").get<int>()) +
-                                " ("),
-                  std::string::npos)
+        EXPECT_NE(
+            text.out.find(") of triangle " + std::to_string(f.at("triangle").get<int>()) + " ("),
+            std::string::npos)
             << text.out;
     }
     ASSERT_EQ(seen.size(), 4u);
@@ -283,7 +284,8 @@ TEST(ExidelCertify, ReadErrorsNameTheLine) {
     EXPECT_NE(err("g.json", "{\"hull\": [0, 1, 2]}", "").find("\"triangles\" is missing"),
               std::string::npos);
     // A certified OFF with its vertices in another order, and 2D vertex lines.
-    const RunResult ok = certify(tri + " " + write_file("h.off", "OFF 3 1 0\n0 1\n0 0\n1 0\n3 1 2 0\n"));
+    const RunResult ok =
+        certify(tri + " " + write_file("h.off", "OFF 3 1 0\n0 1\n0 0\n1 0\n3 1 2 0\n"));
     EXPECT_EQ(ok.status, 0) << ok.out << ok.err;
 }
 

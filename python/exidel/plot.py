@@ -105,7 +105,7 @@ def _rgb(signs):
     return out
 
 
-def failure_map(signs, exact=None, ax=None, *, offsets=None, step=1, centered=False,
+def failure_map(signs, exact=None, ax=None, *, offsets=None, step=1, centered=True,
                 fade=False, legend=True, title=None):
     """Draws a failure map with the C++ picture's colours: positive blue, zero white,
     negative amber, and, when `exact` is given, every cell whose sign differs from it red.
@@ -114,7 +114,9 @@ def failure_map(signs, exact=None, ax=None, *, offsets=None, step=1, centered=Fa
 
     signs    (height, width) int8, row j = offset j in y (or an exidel.research.FailureMap,
              which brings its exact signs, offsets and title)
-    offsets  (offsets_x, offsets_y) in steps; default 0.. (or centred: -W/2..), times step
+    offsets  (offsets_x, offsets_y) in steps, times step; default -W/2.. (the window
+             centred on the point, as compute_failure_map's default), or 0.. with
+             centered=False
     Returns the Axes; the picture is an AxesImage with gid "signs"."""
     from matplotlib.patches import Patch
 
@@ -124,7 +126,7 @@ def failure_map(signs, exact=None, ax=None, *, offsets=None, step=1, centered=Fa
         signs, exact = m.signs, m.exact if exact is None else exact
         offsets = (m.offsets_x, m.offsets_y) if offsets is None else offsets
         if title is None:
-            title = f"{m.predicate}, kernel {m.kernel}: {m.wrong} wrong of {m.signs.size}"
+            title = f"{m.predicate}, kernel {m.kernel}: {m.wrong_count} wrong of {m.signs.size}"
     signs = np.asarray(signs)
     if signs.ndim != 2:
         raise ValueError(f"signs: expected a (height, width) array, got shape {signs.shape}")

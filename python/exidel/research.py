@@ -6,7 +6,7 @@
     r.report                                  # Path of fm/report.md
 
     m = research.compute_failure_map(**research.failure_map_preset("kettner1"))
-    m.wrong                                   # 11972 cells where double is wrong
+    m.wrong_count                             # 11972 cells where double is wrong
 
 The studies run in the `exidel` command (the research library cannot be linked into the
 extension module), as a subprocess: `run` writes the same report folder as the command,
@@ -50,7 +50,11 @@ STUDIES = ("failure-map", "precision", "triangulation", "stages", "all")
 _FAILURE_MAP = {"preset": "--preset", "presets": "--preset", "kernel": "--kernel",
                 "kernels": "--kernel", "width": "--width", "height": "--height",
                 "predicate": "--predicate", "points": "--points", "move": "--move",
-                "order": "--order", "step": "--step", "centered": "--centered", "axes": "--axes"}
+                "order": "--order", "step": "--step", "centered": "--centered",
+                "corner": "--corner", "axes": "--axes"}
+# The window of a custom failure map: centered=True or corner=False is --centered (the
+# command's default), centered=False or corner=True is --corner.
+_WINDOW = {"--centered": "--corner", "--corner": "--centered"}
 _PRECISION = {"bits": "--bits", "families": "--families", "family": "--families",
               "samples": "--samples"}
 _TRIANGULATION = {"kernel": "--kernel", "kernels": "--kernel", "families": "--families",
@@ -182,15 +186,23 @@ def _arguments(study, out, seed, jobs, quick, options):
                 ("; `all` takes only out, seed, jobs and quick" if study == "all" else "")
             raise TypeError(f"study {study!r} has no option {name!r}{hint}")
         flag = known[name]
+        if flag in _WINDOW and v is not None:
+            if not isinstance(v, (bool, np.bool_)):
+                raise TypeError(f"option {name!r} is True or False, got {v!r}")
+            flag = flag if v else _WINDOW[flag]
+            if _WINDOW[flag] in given:
+                raise TypeError("centered and corner choose different windows: give one")
+            if flag not in given:
+                given.add(flag)
+                args.append(flag)
+            continue
         if flag in given:
             raise TypeError(f"option {flag} given twice (keyword {name!r})")
         if v is None or v is False:
             continue
         given.add(flag)
         if v is True:
-            if flag != "--centered":
-                raise TypeError(f"option {name!r} needs a value")
-            args.append(flag)
+            raise TypeError(f"option {name!r} needs a value")
         else:
             args += [flag, _value(flag, v)]
     return args
@@ -204,8 +216,9 @@ def run(study, out, *, seed=DEFAULT_SEED, jobs=1, quick=False, timeout=None, **o
              left as they are)
     seed, jobs, quick   the common options (jobs changes no result)
     options  the study's own options, named as the command's flags without "--"
-             (kernel=["double", "adaptive"] -> --kernel double,adaptive; centered=True ->
-             --centered; points=[[x, y], ...] -> --points "x,y;..."). See
+             (kernel=["double", "adaptive"] -> --kernel double,adaptive; points=[[x, y],
+             ...] -> --points "x,y;..."; a custom map's window: centered=False or
+             corner=True -> --corner, centered=True -> --centered, the default). See
              `exidel study --help`.
     Returns a StudyResult (.tables, .report, ...). Raises ValueError for an unknown study,
     TypeError for an option the study does not take, StudyOptionError (a ValueError) when
@@ -226,7 +239,8 @@ def run(study, out, *, seed=DEFAULT_SEED, jobs=1, quick=False, timeout=None, **o
 
 def failure_map(out, **kwargs):
     """The failure-map study (`run("failure-map", out, ...)`): preset, kernel, width,
-    height, or a custom predicate, points, move, order, step, centered. For the map itself
+    height, or a custom predicate, points, move, order, step, axes and its window (centred
+    by default; centered=False or corner=True: the moving point at the corner). For the map itself
     without the command, see compute_failure_map."""
     return run("failure-map", out, **kwargs)
 
@@ -459,10 +473,12 @@ class FailureMap:
 
     @property
     def wrong_cells(self):
+        """(height, width) bool array: the cells where the kernel's sign is wrong."""
         return self.signs != self.exact
 
     @property
-    def wrong(self):
+    def wrong_count(self):
+        """How many cells are wrong (an int)."""
         return int(np.count_nonzero(self.signs != self.exact))
 
     def counts(self, exact=False):
@@ -471,11 +487,25 @@ class FailureMap:
         return tuple(int(np.count_nonzero(s == v)) for v in (-1, 0, 1))
 
 
+def _centred(centered, corner):
+    """The window of a failure map from the keywords centered and corner (None: not given):
+    centred unless centered=False or corner=True."""
+    if centered is not None and corner is not None and bool(centered) == bool(corner):
+        raise ValueError(f"centered={centered!r} and corner={corner!r} choose different "
+                         "windows: give one")
+    if corner is not None:
+        return not corner
+    return True if centered is None else bool(centered)
+
+
 def compute_failure_map(points, move=0, predicate="orient2d", kernel="double", width=256,
-                        height=256, step=1, centered=False, order=None, reference="exact", axes="xy"):
+                        height=256, step=1, centered=None, order=None, reference="exact",
+                        axes="xy", corner=None):
     """One predicate evaluated while points[move] moves over a width x height grid: cell
     (j, i) moves its x by offset(i) * step and its y by offset(j) * step representable
-    doubles (offset(i) = i, or i - width // 2 when centered), as the failure-map study.
+    doubles, as the failure-map study: offset(i) = i - width // 2 by default (the window
+    centred on the point, as `exidel study failure-map` draws a custom map), or
+    offset(i) = i with centered=False or corner=True (the point at the window's corner).
 
     points     3 (orient2d, compare_distance) or 4 (incircle, incircle_cosine) points
                (x, y); 4 (orient3d) or 5 (insphere) points (x, y, z)
@@ -485,8 +515,8 @@ def compute_failure_map(points, move=0, predicate="orient2d", kernel="double", w
     axes       in space: the moving point's coordinates on the map's x and y, two letters
                of "xyz" ("xy": x and y move, z stays)
     kernel     the kernel mapped; reference the exact kernel the map is compared with
-    Returns a FailureMap (.signs, .exact, .wrong, ...); its .x and .y are the values of
-    the moving coordinates per column and row.
+    Returns a FailureMap (.signs, .exact, .wrong_cells, .wrong_count, ...); its .x and .y
+    are the values of the moving coordinates per column and row.
     """
     from . import _core
 
@@ -517,6 +547,7 @@ def compute_failure_map(points, move=0, predicate="orient2d", kernel="double", w
         raise ValueError(f"axes must be two different letters of x, y, z (e.g. 'xz'), got {axes!r}")
     ax, ay = "xyz".index(axes[0]), "xyz".index(axes[1])
 
+    centered = _centred(centered, corner)
     offsets_x = np.arange(width, dtype=np.int64) - (width // 2 if centered else 0)
     offsets_y = np.arange(height, dtype=np.int64) - (height // 2 if centered else 0)
     bx, by = float(pts[move, ax]), float(pts[move, ay])

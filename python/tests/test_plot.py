@@ -67,7 +67,7 @@ def test_triangulation_of_scipy_and_of_collinear_points(rng, tmp_path):
 
 def test_failure_map_of_a_computed_map(tmp_path):
     m = research.compute_failure_map(**dict(research.failure_map_preset("kettner1"), width=48, height=32))
-    assert m.wrong > 0
+    assert m.wrong_count > 0
     ax = plot.failure_map(m)
     image = artist(ax, "signs")
     rgb = np.asarray(image.get_array())
@@ -78,7 +78,7 @@ def test_failure_map_of_a_computed_map(tmp_path):
         assert np.all(rgb[right & (m.signs == s)] == colour)
     assert list(image.get_extent()) == [-0.5, 47.5, -0.5, 31.5]
     assert [t.get_text() for t in ax.get_legend().get_texts()] == ["positive", "zero", "negative", "wrong"]
-    assert str(m.wrong) in ax.get_title() and "ulps" in ax.get_xlabel()
+    assert str(m.wrong_count) in ax.get_title() and "ulps" in ax.get_xlabel()
     save(ax, tmp_path / "map.png")
 
 
@@ -94,7 +94,7 @@ def test_failure_map_of_arrays_centred_and_faded(tmp_path):
     rgb = np.asarray(artist(b, "signs").get_array())
     faded = (np.array(plot.SIGN_COLOURS[1]) + 3 * 255) // 4
     assert np.all(rgb[~m.wrong_cells & (m.exact == 1)] == faded)
-    assert np.count_nonzero(np.all(rgb == plot.WRONG_COLOUR, axis=-1)) == m.wrong
+    assert np.count_nonzero(np.all(rgb == plot.WRONG_COLOUR, axis=-1)) == m.wrong_count
     fig.savefig(tmp_path / "maps.png")
     with pytest.raises(ValueError):
         plot.failure_map(np.zeros(5, dtype=np.int8))

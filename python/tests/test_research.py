@@ -97,7 +97,7 @@ def test_python_failure_map_equals_the_study(exidel_cli, fm_study):
         m = research.compute_failure_map(**research.failure_map_preset(str(row["preset"])),
                                          kernel=str(row["kernel"]))
         assert m.signs.shape == (256, 256) and m.signs.dtype == np.int8
-        assert m.wrong == row["wrong"], (row["preset"], row["kernel"])
+        assert m.wrong_count == row["wrong"], (row["preset"], row["kernel"])
         counts = " / ".join(map(str, m.counts()))
         exact = " / ".join(map(str, m.counts(exact=True)))
         assert (counts, exact) == (row["neg / zero / pos"], row["exact neg / zero / pos"])
@@ -155,8 +155,8 @@ def test_custom_failure_map_conventions(exidel_cli, tmp_path):
         row = r.tables["failure_map"][0]
         m = research.compute_failure_map(**spec, kernel="double")
         assert m.signs.shape == (spec["height"], spec["width"])
-        assert (m.wrong, row["cells"]) == (row["wrong"], m.signs.size)
-        wrong.append(m.wrong)
+        assert (m.wrong_count, row["cells"]) == (row["wrong"], m.signs.size)
+        wrong.append(m.wrong_count)
         assert " / ".join(map(str, m.counts(exact=True))) == row["exact neg / zero / pos"]
         png = tmp_path / str(k) / "custom-double.png"
         if png.exists():  # drawn only when the kernel got a cell wrong
@@ -168,13 +168,42 @@ def test_custom_failure_map_conventions(exidel_cli, tmp_path):
     assert m.x.min() < 0 < m.x.max() and m.y.min() < 0 < m.y.max()
 
 
+def test_custom_failure_map_is_centred_unless_it_asks_for_the_corner(exidel_cli, tmp_path):
+    """No window keyword: centred on the moving point (its unmoved, exactly collinear
+    configuration at the centre cell), in Python and in the command alike; corner=True and
+    centered=False: the point at cell (0, 0)."""
+    spec = dict(predicate="orient2d", points=[(0.5, 0.5), (12.0, 12.0), (24.0, 24.0)], width=24,
+                height=16)
+    m = research.compute_failure_map(**spec)
+    assert m.offsets_x[12] == 0 and m.offsets_y[8] == 0 and m.exact[8, 12] == 0
+    assert m.exact[0, 0] != 0
+    c = research.compute_failure_map(**spec, corner=True)
+    assert np.array_equal(c.offsets_x, np.arange(24)) and np.array_equal(c.offsets_y, np.arange(16))
+    assert c.exact[0, 0] == 0 and not np.array_equal(c.exact, m.exact)
+    assert np.array_equal(research.compute_failure_map(**spec, centered=False).exact, c.exact)
+    assert np.array_equal(research.compute_failure_map(**spec, centered=True).exact, m.exact)
+    with pytest.raises(ValueError, match="give one"):
+        research.compute_failure_map(**spec, centered=True, corner=True)
+    windows = [({}, m, "--centered"), ({"centered": True}, m, "--centered"),
+               ({"corner": True}, c, "--corner"), ({"centered": False}, c, "--corner"),
+               ({"corner": False}, m, "--centered")]
+    for k, (window, expected, flag) in enumerate(windows):
+        r = research.failure_map(tmp_path / str(k), kernel=["adaptive"], **spec, **window)
+        _, exact, _ = panels(tmp_path / str(k) / "custom-adaptive.png", 24, 16)
+        assert np.array_equal(exact, colours(expected.exact)), window
+        rerun = r.report.read_text().split("Rerun: `", 1)[1].split("`", 1)[0]
+        assert f" {flag} " in rerun, (window, rerun)
+    with pytest.raises(TypeError, match="give one"):
+        research.failure_map(tmp_path / "x", **spec, centered=True, corner=True)
+
+
 def test_exact_kernels_agree_and_presets_match_the_command(exidel_cli):
     for preset in ("kettner2", "incircle-s24", "cosine-s12"):
         spec = dict(research.failure_map_preset(preset), width=64, height=48)
         a = research.compute_failure_map(**spec, kernel="adaptive", reference="exact")
         b = research.compute_failure_map(**spec, kernel="exact-cpp", reference="adaptive")
         assert np.array_equal(a.exact, a.signs) and np.array_equal(a.exact, b.exact)
-        assert a.wrong == 0 and b.wrong == 0
+        assert a.wrong_count == 0 and b.wrong_count == 0
     names = [p["name"] for p in research.failure_map_presets()]
     assert names == list(research.list_failure_map_presets())
 
@@ -230,6 +259,26 @@ def test_precision_study_and_its_rerun_line(exidel_cli, tmp_path):
         f.unlink()
     subprocess.run([exidel_cli, *shlex.split(command)[1:]], check=True, capture_output=True)
     assert {f.name: f.read_bytes() for f in out.glob("*.csv")} == before
+
+
+def test_precision_plot_is_one_line_per_family_as_svg_and_png(exidel_cli, tmp_path):
+    """precision.svg parsed as XML: a panel per formulation, a series per family in each;
+    precision.png decoded by Pillow (through matplotlib) at twice the SVG's size."""
+    import xml.etree.ElementTree as ET
+    import matplotlib.image
+    families = ["near_integer_grid", "near_dyadic_line", "kettner"]
+    research.precision(tmp_path, bits=[24, 53, 64], families=families, samples=40)
+    ns = {"s": "http://www.w3.org/2000/svg"}
+    svg = ET.parse(tmp_path / "precision.svg").getroot()
+    panels = svg.findall("s:g[@class='panel']", ns)
+    assert [p.find("s:title", ns).text for p in panels] == ["orient2d", "incircle", "incircle_cosine"]
+    for p in panels:
+        series = p.findall("s:g[@class='series']", ns)
+        assert [g.find("s:title", ns).text for g in series] == families
+        assert all(len(g.find("s:polyline", ns).get("points").split()) == 3 for g in series)
+    rgb = matplotlib.image.imread(tmp_path / "precision.png")
+    assert rgb.shape[:2] == (2 * int(float(svg.get("height"))), 2 * int(float(svg.get("width"))))
+    assert len(np.unique((rgb[..., :3] * 255).round().reshape(-1, 3), axis=0)) > 5
 
 
 def test_triangulation_study_and_replay_of_its_fixtures(exidel_cli, tmp_path):

@@ -2,6 +2,8 @@
 // they write (PNG, report, fixtures) can be read back and reproduces.
 #include <sys/wait.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -11,11 +13,14 @@
 #include <sstream>
 #include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "exidel/predicates/build_info.hpp"
 #include "exidel/research/studies.hpp"
+#include "exidel/testing/ulp.hpp"
 
 namespace exidel::research {
 namespace {
@@ -288,6 +293,7 @@ TEST(Determinism, EveryStudyWritesTheSameFilesForOneAndTwoJobs) {
         EXPECT_EQ(bytes, two.at(name)) << name << " differs between --jobs 1 and --jobs 2";
     }
     EXPECT_TRUE(one.count("precision/precision.svg"));
+    EXPECT_TRUE(one.count("precision/precision.png"));
     EXPECT_TRUE(one.count("triangulation/triangulation_work.csv"));
     EXPECT_NE(one.at("triangulation/report.md").find("## Work per insertion order"),
               std::string::npos);
@@ -325,6 +331,141 @@ TEST(Precision, EnoughBitsMakeNoErrorAndDoublePrecisionDoes) {
         EXPECT_EQ(c.total, 500u);
     }
     EXPECT_GT(wrong53, 0u);
+}
+
+/// The text between `open` and the next `close` after position `from` ("" if none).
+std::string between(const std::string& text, const std::string& open, const std::string& close,
+                    std::size_t from = 0) {
+    const std::size_t a = text.find(open, from);
+    if (a == std::string::npos) return "";
+    const std::size_t b = text.find(close, a + open.size());
+    return b == std::string::npos ? "" : text.substr(a + open.size(), b - a - open.size());
+}
+
+/// Every piece of `text` that starts with `marker`, up to the next one (or the end).
+std::vector<std::string> pieces(const std::string& text, const std::string& marker) {
+    std::vector<std::string> out;
+    for (std::size_t a = text.find(marker); a != std::string::npos;) {
+        const std::size_t b = text.find(marker, a + marker.size());
+        out.push_back(text.substr(a, b == std::string::npos ? std::string::npos : b - a));
+        a = b;
+    }
+    return out;
+}
+
+/// CRC-32 of PNG (ISO 3309, polynomial 0xEDB88320 reflected), bit by bit.
+std::uint32_t crc32(const std::string& bytes) {
+    std::uint32_t c = 0xFFFFFFFFu;
+    for (unsigned char b : bytes) {
+        c ^= b;
+        for (int k = 0; k < 8; ++k) c = (c >> 1) ^ (0xEDB88320u & (0u - (c & 1u)));
+    }
+    return c ^ 0xFFFFFFFFu;
+}
+
+std::uint32_t big_endian(const std::string& bytes, std::size_t at) {
+    std::uint32_t v = 0;
+    for (std::size_t i = 0; i < 4; ++i) v = (v << 8) | static_cast<unsigned char>(bytes[at + i]);
+    return v;
+}
+
+/// Checks a PNG file's structure without libpng: the signature, every chunk's length and
+/// CRC, IHDR first (returns its width and height), some IDAT, IEND last.
+std::pair<std::uint32_t, std::uint32_t> check_png_chunks(const std::string& png) {
+    const std::string signature = "\x89PNG\r\n\x1a\n";
+    EXPECT_EQ(png.substr(0, 8), signature);
+    std::vector<std::string> types;
+    std::pair<std::uint32_t, std::uint32_t> size{0, 0};
+    std::size_t at = 8;
+    while (at + 12 <= png.size()) {
+        const std::uint32_t length = big_endian(png, at);
+        if (at + 12 + length > png.size()) break;
+        const std::string type_and_data = png.substr(at + 4, 4 + length);
+        types.push_back(type_and_data.substr(0, 4));
+        EXPECT_EQ(crc32(type_and_data), big_endian(png, at + 8 + length))
+            << "CRC of chunk " << types.back();
+        if (types.back() == "IHDR") {
+            EXPECT_EQ(length, 13u);
+            size = {big_endian(type_and_data, 4), big_endian(type_and_data, 8)};
+            EXPECT_EQ(type_and_data[12], 8);  // bit depth
+            EXPECT_EQ(type_and_data[13], 2);  // colour type: RGB
+        }
+        at += 12 + length;
+    }
+    EXPECT_EQ(at, png.size()) << "bytes after the last whole chunk";
+    EXPECT_FALSE(types.empty());
+    if (types.empty()) return size;
+    EXPECT_EQ(types.front(), "IHDR");
+    EXPECT_EQ(types.back(), "IEND");
+    EXPECT_NE(std::find(types.begin(), types.end(), "IDAT"), types.end());
+    return size;
+}
+
+// The precision plot: one panel per formulation, one line per family in each (the same
+// colour in every panel, one legend entry), with a point per precision; and the same plot
+// as a valid PNG of twice the SVG's size, every family's colour drawn.
+TEST(Precision, ThePlotHasOneLinePerFamilyAndAValidPng) {
+    PrecisionOptions pr;
+    pr.families = {testing::Family::near_rounded_line, testing::Family::kettner,
+                   testing::Family::near_integer_grid};
+    pr.bits = {24, 53, 128};
+    pr.samples = 50;
+    const fs::path out = work_dir("precision_plot");
+    const PrecisionStudy study = run_precision_study(pr, quiet_run(out));
+    const std::string svg = read_file(out / "precision.svg");
+    const std::vector<std::string> panels = pieces(svg, "<g class=\"panel\">");
+    ASSERT_EQ(panels.size(), std::size(all_formulations));
+    std::vector<std::string> first_colours;
+    for (std::size_t f = 0; f < panels.size(); ++f) {
+        EXPECT_EQ(between(panels[f], "<title>", "</title>"), predicate_name(all_formulations[f]));
+        std::vector<std::string> series = pieces(panels[f], "<g class=\"series\">");
+        ASSERT_EQ(series.size(), pr.families.size());
+        for (std::string& g : series) g = g.substr(0, g.find("</g>"));
+        std::vector<std::string> colours;
+        for (std::size_t k = 0; k < series.size(); ++k) {
+            EXPECT_EQ(between(series[k], "<title>", "</title>"),
+                      testing::family_name(pr.families[k]));
+            EXPECT_EQ(pieces(series[k], "<polyline").size(), 1u);
+            std::istringstream points(between(series[k], "points=\"", "\""));
+            std::size_t n = 0;
+            for (std::string xy; points >> xy;) ++n;
+            EXPECT_EQ(n, pr.bits.size());
+            EXPECT_EQ(pieces(series[k], "<circle").size(), pr.bits.size());
+            colours.push_back(between(series[k], "stroke=\"", "\""));
+        }
+        EXPECT_EQ(std::set<std::string>(colours.begin(), colours.end()).size(), colours.size());
+        if (f == 0) first_colours = colours;
+        EXPECT_EQ(colours, first_colours);  // a family keeps its colour in every panel
+    }
+    const std::string legend = between(svg, "<g class=\"legend\">", "</g>");
+    for (testing::Family fam : pr.families) {
+        EXPECT_NE(legend.find(">" + std::string(testing::family_name(fam)) + "</text>"),
+                  std::string::npos);
+    }
+    EXPECT_EQ(pieces(legend, "<text").size(), pr.families.size());
+
+    const std::string png = read_file(out / "precision.png");
+    const auto [width, height] = check_png_chunks(png);
+    EXPECT_EQ(double(width), 2 * std::stod(between(svg, "width=\"", "\"")));
+    EXPECT_EQ(double(height), 2 * std::stod(between(svg, "height=\"", "\"")));
+    const Image image = read_png(out / "precision.png");
+    ASSERT_EQ(image.width, int(width));
+    ASSERT_EQ(image.height, int(height));
+    for (const std::string& c : first_colours) {
+        const Rgb want{std::uint8_t(std::stoi(c.substr(1, 2), nullptr, 16)),
+                       std::uint8_t(std::stoi(c.substr(3, 2), nullptr, 16)),
+                       std::uint8_t(std::stoi(c.substr(5, 2), nullptr, 16))};
+        EXPECT_GT(std::count(image.pixels.begin(), image.pixels.end(), want), 1000) << c;
+    }
+    EXPECT_NE(study.report.render().find("](precision.png)"), std::string::npos);
+    // The checker's CRC: the standard check value, and a flipped bit in the chunk after
+    // IHDR (at byte 33: its length, then type and data) no longer matches the stored CRC.
+    EXPECT_EQ(crc32("123456789"), 0xCBF43926u);
+    std::string damaged = png;
+    const std::uint32_t length = big_endian(png, 33);
+    damaged[41] = char(damaged[41] ^ 1);
+    EXPECT_EQ(crc32(png.substr(37, 4 + length)), big_endian(png, 41 + length));
+    EXPECT_NE(crc32(damaged.substr(37, 4 + length)), big_endian(damaged, 41 + length));
 }
 
 // --- triangulation -----------------------------------------------------------------
@@ -560,6 +701,84 @@ TEST(FailureMap, CommandLineDrawsACustomSpaceMap) {
     EXPECT_EQ(run_cli("study failure-map --predicate insphere3 --points '1,2;3,4;5,6' --out " +
                       out.string()),
               2);
+#else
+    GTEST_SKIP() << "the exidel binary is not built";
+#endif
+}
+
+// A custom map's window is centred on the moving point unless it asks for the corner:
+// the centred map is the corner map of the point moved back by half the window, its
+// centre cell the unmoved (exactly degenerate) configuration. The presets keep their own
+// windows: Kettner's at the corner (as the paper draws them), the others centred.
+TEST(FailureMap, ACustomMapIsCentredByDefaultAndTheCornerIsTheShiftedWindow) {
+    FailureMapSpec centred;
+    EXPECT_TRUE(centred.centered);
+    centred.name = "custom";
+    centred.points = {{0.5, 0.5}, {12, 12}, {24, 24}};  // exactly collinear
+    centred.order = {0, 1, 2};
+    centred.width = 24;
+    centred.height = 15;
+    FailureMapSpec corner = centred;
+    corner.centered = false;
+    corner.points[0] = {testing::nudge(0.5, -12), testing::nudge(0.5, -7)};
+    const FailureMap a = compute_failure_map(centred, DoubleKernel{}, 2);
+    const FailureMap b = compute_failure_map(corner, DoubleKernel{}, 2);
+    EXPECT_EQ(a.signs, b.signs);
+    EXPECT_EQ(a.exact, b.exact);
+    EXPECT_EQ(a.exact[7 * 24 + 12], Sign::zero);  // the centre cell: p itself
+    EXPECT_NE(a.exact[0], Sign::zero);
+    // The same points with the corner window: p at cell (0, 0).
+    corner.points = centred.points;
+    const FailureMap c = compute_failure_map(corner, DoubleKernel{}, 2);
+    EXPECT_EQ(c.exact[0], Sign::zero);
+    EXPECT_NE(c.exact, a.exact);
+
+    for (const FailureMapSpec& s : failure_map_presets())
+        EXPECT_EQ(s.centered, !s.name.starts_with("kettner")) << s.name;
+}
+
+// From the command line: no flag and --centered draw the centred window, --corner the
+// moving point at the corner, each picture the library's for that window, and the report's
+// rerun line names the window and writes the same picture again.
+TEST(FailureMap, CommandLineCentresACustomMapAndCornerKeepsTheCornerWindow) {
+#ifdef EXIDEL_CLI_PATH
+    const std::string map =
+        "study failure-map --predicate orient2d --points '0.5,0.5;12,12;24,24' --width 24 "
+        "--height 16 --kernel adaptive --no-progress --out ";
+    FailureMapSpec spec;
+    spec.name = "custom";
+    spec.points = {{0.5, 0.5}, {12, 12}, {24, 24}};
+    spec.order = {0, 1, 2};
+    spec.width = 24;
+    spec.height = 16;
+    const auto picture = [](bool centered, FailureMapSpec s) {
+        s.centered = centered;
+        return render_failure_map(compute_failure_map(s, AdaptiveKernel{}, 1)).pixels;
+    };
+    const std::string png = "custom-adaptive.png";
+    for (const auto& [flag, centered] :
+         {std::pair<std::string, bool>{"", true}, {" --centered", true}, {" --corner", false}}) {
+        const fs::path out = work_dir("failure_map_window" + (flag.empty() ? "" : flag.substr(3)));
+        ASSERT_EQ(run_cli(map + out.string() + flag), 0) << flag;
+        EXPECT_EQ(read_png(out / png).pixels, picture(centered, spec)) << flag;
+        EXPECT_NE(read_png(out / png).pixels, picture(!centered, spec)) << flag;
+        const std::string report = read_file(out / "report.md");
+        const std::string rerun = line_after(report, std::string(rerun_prefix));
+        const std::string command = rerun.substr(0, rerun.find('`'));
+        EXPECT_NE(command.find(centered ? " --centered" : " --corner"), std::string::npos)
+            << command;
+        EXPECT_NE(report.find(centered ? "the window centred on it" : "from the window's corner"),
+                  std::string::npos);
+        const std::string first = read_file(out / png);
+        fs::remove(out / png);
+        ASSERT_EQ(run_cli(command.substr(std::string("exidel ").size())), 0) << command;
+        EXPECT_EQ(read_file(out / png), first) << command;
+    }
+    const std::string out = work_dir("failure_map_window_errors").string();
+    EXPECT_EQ(run_cli(map + out + " --centered --corner"), 2);
+    EXPECT_EQ(run_cli("study failure-map --preset kettner1 --corner --out " + out), 2);
+    EXPECT_EQ(run_cli("study all --corner --out " + out), 2);
+    EXPECT_NE(cli_output("study --help").find("--corner"), std::string::npos);
 #else
     GTEST_SKIP() << "the exidel binary is not built";
 #endif
@@ -886,11 +1105,11 @@ TEST(Reproducibility, TheReportsRerunLineWritesTheSameFilesAgain) {
         EXPECT_EQ(one, 1u);
     }
 
-    // No picture twice: neither the same file bytes, nor (titles aside) the same panels.
+    // No failure map twice: neither the same file bytes, nor (titles aside) the same panels.
     const FailureMapLayout layout = failure_map_layout(256, 256);
     std::map<std::string, std::string> by_bytes, by_panels;
     for (const auto& [name, bytes] : a) {
-        if (!name.ends_with(".png")) continue;
+        if (!name.ends_with(".png") || !name.starts_with("failure-map/")) continue;
         const auto [it, fresh] = by_bytes.emplace(bytes, name);
         EXPECT_TRUE(fresh) << name << " and " << it->second << " are byte-identical";
         const Image img = read_png(first / "out" / name);
@@ -937,7 +1156,7 @@ TEST(Reproducibility, OneStudysRerunLineHasEveryOptionThatChangesAResult) {
     EXPECT_EQ(line_after(report, std::string(rerun_prefix))
                   .substr(0, line_after(report, std::string(rerun_prefix)).find('`')),
               "exidel study failure-map --seed 20250704 --kernel double --predicate orient2d "
-              "--points '0.5,0.5;12,12;24,24' --width 16 --height 8 --out 'my maps'");
+              "--points '0.5,0.5;12,12;24,24' --centered --width 16 --height 8 --out 'my maps'");
     EXPECT_EQ(without_lines(report, timing_prefix).second, 1);
 #endif
 }

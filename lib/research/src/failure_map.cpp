@@ -32,6 +32,7 @@ FailureMapSpec kettner(int index, std::vector<std::size_t> order, std::string na
     s.formulation = Formulation::orient2d;
     s.points = {c[0], c[1], c[2]};
     s.pivot = 0;
+    s.centered = false;  // the paper's window: p at its corner
     const char* letters = "pqr";
     std::string args;
     for (std::size_t i : order) args += letters[i];

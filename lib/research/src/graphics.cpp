@@ -1,5 +1,5 @@
 // exidel::research: PNG via libpng's simplified API (no setjmp in our code), and the
-// SVG line plot.
+// line plot as SVG and as an image.
 #include "exidel/research/graphics.hpp"
 
 #include <png.h>
@@ -203,6 +203,9 @@ void fill_rect(Image& image, int x, int y, int w, int h, Rgb colour) {
 }
 
 // ---------------------------------------------------------------------------------
+// The line plot. One drawing routine (draw_plot) describes the picture to a Canvas; the
+// SVG canvas writes elements, the raster canvas sets pixels, so the two files show the
+// same plot by construction.
 
 namespace {
 
@@ -226,26 +229,196 @@ std::string number(double v) {
     return buf;
 }
 
-// Colour-blind-safe palette (Okabe-Ito).
-constexpr const char* palette[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7",
-                                   "#E69F00", "#56B4E9", "#000000"};
+// Colour-blind-safe palette (Okabe-Ito); after seven curves the colours repeat dashed,
+// then dotted.
+constexpr Rgb palette[] = {{0x00, 0x72, 0xB2}, {0xD5, 0x5E, 0x00}, {0x00, 0x9E, 0x73},
+                           {0xCC, 0x79, 0xA7}, {0xE6, 0x9F, 0x00}, {0x56, 0xB4, 0xE9},
+                           {0x00, 0x00, 0x00}};
+constexpr Rgb black{0, 0, 0}, white{255, 255, 255}, grid_grey{0xdd, 0xdd, 0xdd},
+    zero_grey{0x99, 0x99, 0x99};
 
-}  // namespace
+enum class Dash { solid, dashed, dotted };
+enum class Anchor { start, middle, end };
 
-std::string render_svg(const LinePlot& plot) {
-    constexpr double W = 720, H = 420, left = 80, right = 190, top = 40, bottom = 60;
-    const double pw = W - left - right, ph = H - top - bottom;
+std::string hex(Rgb c) {
+    char buf[8];
+    std::snprintf(buf, sizeof buf, "#%02X%02X%02X", c.r, c.g, c.b);
+    return buf;
+}
+
+/// What draw_plot draws with, in SVG user units (pixels of the SVG).
+class Canvas {
+public:
+    virtual ~Canvas() = default;
+    virtual void begin_group(const char* kind, const std::string& title) = 0;
+    virtual void end_group() = 0;
+    virtual void frame(double x, double y, double w, double h) = 0;  ///< black outline
+    virtual void polyline(const std::vector<std::pair<double, double>>& points, Rgb colour,
+                          double width, Dash dash) = 0;
+    virtual void disc(double cx, double cy, double r, Rgb colour) = 0;
+    /// Baseline at y; vertical: turned a quarter left around (x, y).
+    virtual void text(double x, double y, const std::string& text, double size, Anchor anchor,
+                      bool vertical = false) = 0;
+    void line(double x1, double y1, double x2, double y2, Rgb colour, double width,
+              Dash dash = Dash::solid) {
+        polyline({{x1, y1}, {x2, y2}}, colour, width, dash);
+    }
+};
+
+class SvgCanvas final : public Canvas {
+public:
+    std::ostringstream out;
+    void begin_group(const char* kind, const std::string& title) override {
+        out << "<g class=\"" << kind << "\"><title>" << escape_xml(title) << "</title>\n";
+    }
+    void end_group() override { out << "</g>\n"; }
+    void frame(double x, double y, double w, double h) override {
+        out << "<rect x=\"" << number(x) << "\" y=\"" << number(y) << "\" width=\"" << number(w)
+            << "\" height=\"" << number(h) << "\" fill=\"none\" stroke=\"black\"/>\n";
+    }
+    void polyline(const std::vector<std::pair<double, double>>& points, Rgb colour, double width,
+                  Dash dash) override {
+        out << "<polyline fill=\"none\" stroke=\"" << hex(colour) << "\" stroke-width=\""
+            << number(width) << "\"";
+        if (dash == Dash::dashed) out << " stroke-dasharray=\"6 3\"";
+        if (dash == Dash::dotted) out << " stroke-dasharray=\"2 2\"";
+        out << " points=\"";
+        for (const auto& [x, y] : points) out << number(x) << ',' << number(y) << ' ';
+        out << "\"/>\n";
+    }
+    void disc(double cx, double cy, double r, Rgb colour) override {
+        out << "<circle cx=\"" << number(cx) << "\" cy=\"" << number(cy) << "\" r=\"" << number(r)
+            << "\" fill=\"" << hex(colour) << "\"/>\n";
+    }
+    void text(double x, double y, const std::string& text, double size, Anchor anchor,
+              bool vertical) override {
+        const char* a = anchor == Anchor::start    ? "start"
+                        : anchor == Anchor::middle ? "middle"
+                                                   : "end";
+        out << "<text";
+        if (vertical) {
+            out << " transform=\"translate(" << number(x) << ',' << number(y) << ") rotate(-90)\"";
+        } else {
+            out << " x=\"" << number(x) << "\" y=\"" << number(y) << "\"";
+        }
+        out << " text-anchor=\"" << a << "\" font-size=\"" << number(size) << "\">"
+            << escape_xml(text) << "</text>\n";
+    }
+};
+
+/// Pixels at `zoom` times the SVG's units; text in the bitmap font, about as tall as the
+/// SVG's sans-serif at that zoom.
+class RasterCanvas final : public Canvas {
+public:
+    RasterCanvas(double width, double height, int zoom)
+        : image(int(std::lround(width * zoom)), int(std::lround(height * zoom)), white),
+          zoom_(zoom) {}
+    Image image;
+    void begin_group(const char*, const std::string&) override {}
+    void end_group() override {}
+    void frame(double x, double y, double w, double h) override {
+        const int x0 = px(x), y0 = px(y), x1 = px(x + w), y1 = px(y + h);
+        fill_rect(image, x0, y0, x1 - x0 + 1, zoom_, black);
+        fill_rect(image, x0, y1 - zoom_ + 1, x1 - x0 + 1, zoom_, black);
+        fill_rect(image, x0, y0, zoom_, y1 - y0 + 1, black);
+        fill_rect(image, x1 - zoom_ + 1, y0, zoom_, y1 - y0 + 1, black);
+    }
+    void polyline(const std::vector<std::pair<double, double>>& points, Rgb colour, double width,
+                  Dash dash) override {
+        // Discs of the line's width stamped every half pixel along it; a dash pattern runs
+        // on across the vertices.
+        const double on = dash == Dash::dashed ? 6 * zoom_ : 2 * zoom_;
+        const double period = dash == Dash::dashed ? 9 * zoom_ : 4 * zoom_;
+        const double r = std::max(0.5, width * zoom_ / 2);
+        double travelled = 0;
+        for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+            const double x0 = points[i].first * zoom_, y0 = points[i].second * zoom_;
+            const double dx = points[i + 1].first * zoom_ - x0,
+                         dy = points[i + 1].second * zoom_ - y0;
+            const double length = std::hypot(dx, dy);
+            const int steps = std::max(1, int(std::ceil(length * 2)));
+            for (int k = 0; k <= steps; ++k) {
+                const double t = double(k) / steps;
+                if (dash != Dash::solid && std::fmod(travelled + t * length, period) >= on)
+                    continue;
+                stamp(x0 + t * dx, y0 + t * dy, r, colour);
+            }
+            travelled += length;
+        }
+    }
+    void disc(double cx, double cy, double r, Rgb colour) override {
+        stamp(cx * zoom_, cy * zoom_, r * zoom_, colour);
+    }
+    void text(double x, double y, const std::string& text, double size, Anchor anchor,
+              bool vertical) override {
+        // Font pixels of zoom * size / 12 px (12 px text at zoom 2: capitals 14 px tall,
+        // as a 24 px sans-serif's), smaller where the text would not fit the image.
+        int scale = std::max(1, int(std::lround(zoom_ * size / 12.0)));
+        while (scale > 1 && text_width(text, scale) > image.width) --scale;
+        const int w = text_width(text, scale);
+        const int shift = anchor == Anchor::start ? 0 : anchor == Anchor::middle ? w / 2 : w;
+        const int baseline = 7 * scale;  // the glyphs' eighth row holds the descenders
+        if (vertical) {
+            draw_text_vertical(image, px(x) - baseline, px(y) + shift, text, black, scale);
+        } else {
+            draw_text(image, px(x) - shift, px(y) - baseline, text, black, scale);
+        }
+    }
+
+private:
+    int zoom_;
+    int px(double v) const { return int(std::lround(v * zoom_)); }
+    void stamp(double cx, double cy, double r, Rgb colour) {
+        // Pixel (i, j) covers [i, i + 1) x [j, j + 1); it is set when its centre is inside.
+        for (int j = int(std::floor(cy - r)); j <= int(std::ceil(cy + r)); ++j) {
+            for (int i = int(std::floor(cx - r)); i <= int(std::ceil(cx + r)); ++i) {
+                const double ex = i + 0.5 - cx, ey = j + 0.5 - cy;
+                if (ex * ex + ey * ey <= r * r && i >= 0 && j >= 0 && i < image.width &&
+                    j < image.height)
+                    image.at(i, j) = colour;
+            }
+        }
+    }
+};
+
+struct PlotSize {
+    double W, H, left, top, pw, ph, gap;
+};
+
+PlotSize plot_size(const LinePlot& plot) {
+    const std::size_t n = std::max<std::size_t>(1, plot.panels.size());
+    const bool captions = std::any_of(plot.panels.begin(), plot.panels.end(),
+                                      [](const Panel& p) { return !p.title.empty(); });
+    PlotSize s{};
+    s.left = 80;
+    s.top = captions ? 60 : 40;
+    s.gap = 20;
+    s.pw = n == 1 ? 450 : 260;
+    s.ph = 320;
+    s.W = s.left + double(n) * s.pw + double(n - 1) * s.gap + 190;
+    s.H = s.top + s.ph + 60;
+    return s;
+}
+
+void draw_plot(const LinePlot& plot, Canvas& c) {
+    const PlotSize size = plot_size(plot);
+    const double left = size.left, top = size.top, pw = size.pw, ph = size.ph, H = size.H;
 
     double xmin = std::numeric_limits<double>::infinity(), xmax = -xmin;
     double ymin_pos = std::numeric_limits<double>::infinity(), ymax = 0;
     double ymin = std::numeric_limits<double>::infinity();
-    for (const Series& s : plot.series) {
-        for (std::size_t i = 0; i < s.x.size(); ++i) {
-            xmin = std::min(xmin, s.x[i]);
-            xmax = std::max(xmax, s.x[i]);
-            ymax = std::max(ymax, s.y[i]);
-            ymin = std::min(ymin, s.y[i]);
-            if (s.y[i] > 0) ymin_pos = std::min(ymin_pos, s.y[i]);
+    std::vector<std::string> names;  // legend: every series name once, in order of appearance
+    for (const Panel& panel : plot.panels) {
+        for (const Series& s : panel.series) {
+            if (std::find(names.begin(), names.end(), s.name) == names.end())
+                names.push_back(s.name);
+            for (std::size_t i = 0; i < s.x.size(); ++i) {
+                xmin = std::min(xmin, s.x[i]);
+                xmax = std::max(xmax, s.x[i]);
+                ymax = std::max(ymax, s.y[i]);
+                ymin = std::min(ymin, s.y[i]);
+                if (s.y[i] > 0) ymin_pos = std::min(ymin_pos, s.y[i]);
+            }
         }
     }
     if (!(xmin < xmax)) {
@@ -267,7 +440,6 @@ std::string render_svg(const LinePlot& plot) {
         ymin = std::min(0.0, ymin);
         if (!(ymax > ymin)) ymax = ymin + 1;
     }
-    auto X = [&](double x) { return left + (x - xmin) / (xmax - xmin) * pw; };
     auto Y = [&](double y) {
         if (plot.log_y) {
             if (y <= 0) return top + ph;
@@ -276,15 +448,6 @@ std::string render_svg(const LinePlot& plot) {
         }
         return top + ph * (1 - (y - ymin) / (ymax - ymin));
     };
-
-    std::ostringstream s;
-    s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H
-      << "\" viewBox=\"0 0 " << W << ' ' << H << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
-      << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-      << "<text x=\"" << number(left + pw / 2)
-      << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">" << escape_xml(plot.title)
-      << "</text>\n";
-    // Grid and ticks.
     const double xstep = [&] {
         const double span = xmax - xmin;
         for (double st : {1.0, 2.0, 5.0, 8.0, 16.0, 32.0, 64.0, 128.0, 256.0, 512.0}) {
@@ -292,61 +455,90 @@ std::string render_svg(const LinePlot& plot) {
         }
         return span / 8;
     }();
-    for (double x = std::ceil(xmin / xstep) * xstep; x <= xmax + 1e-9; x += xstep) {
-        s << "<line x1=\"" << number(X(x)) << "\" y1=\"" << top << "\" x2=\"" << number(X(x))
-          << "\" y2=\"" << top + ph << "\" stroke=\"#ddd\"/>\n"
-          << "<text x=\"" << number(X(x)) << "\" y=\"" << top + ph + 18
-          << "\" text-anchor=\"middle\">" << x << "</text>\n";
+    const auto colour = [&](std::size_t k) { return palette[k % std::size(palette)]; };
+    const auto dash = [&](std::size_t k) {
+        const std::size_t d = k / std::size(palette) % 3;
+        return d == 0 ? Dash::solid : d == 1 ? Dash::dashed : Dash::dotted;
+    };
+    const double right_edge = left + double(std::max<std::size_t>(1, plot.panels.size())) * pw +
+                              double(std::max<std::size_t>(1, plot.panels.size()) - 1) * size.gap;
+
+    c.text((left + right_edge) / 2, 22, plot.title, 15, Anchor::middle);
+    for (std::size_t p = 0; p < plot.panels.size(); ++p) {
+        const Panel& panel = plot.panels[p];
+        const double x0 = left + double(p) * (pw + size.gap);
+        auto X = [&](double x) { return x0 + (x - xmin) / (xmax - xmin) * pw; };
+        c.begin_group("panel", panel.title);
+        // Grid and ticks; the y labels left of the first panel only (the scales are shared).
+        for (double x = std::ceil(xmin / xstep) * xstep; x <= xmax + 1e-9; x += xstep) {
+            c.line(X(x), top, X(x), top + ph, grid_grey, 1);
+            std::ostringstream label;
+            label << x;
+            c.text(X(x), top + ph + 18, label.str(), 12, Anchor::middle);
+        }
+        if (plot.log_y) {
+            for (int d = dlo; d <= dhi; ++d) {
+                const double y = Y(std::pow(10.0, d));
+                c.line(x0, y, x0 + pw, y, grid_grey, 1);
+                if (p == 0) c.text(left - 6, y + 4, "1e" + std::to_string(d), 12, Anchor::end);
+            }
+            const double yz = top + ph - zero_band / 2;
+            c.line(x0, yz, x0 + pw, yz, zero_grey, 1, Dash::dashed);
+            if (p == 0) c.text(left - 6, top + ph + 4, "0", 12, Anchor::end);
+        } else {
+            for (int i = 0; i <= 5; ++i) {
+                const double v = ymin + (ymax - ymin) * i / 5;
+                c.line(x0, Y(v), x0 + pw, Y(v), grid_grey, 1);
+                std::ostringstream label;
+                label << v;
+                if (p == 0) c.text(left - 6, Y(v) + 4, label.str(), 12, Anchor::end);
+            }
+        }
+        c.frame(x0, top, pw, ph);
+        if (!panel.title.empty()) c.text(x0 + pw / 2, top - 8, panel.title, 13, Anchor::middle);
+        for (const Series& se : panel.series) {
+            const auto k =
+                std::size_t(std::find(names.begin(), names.end(), se.name) - names.begin());
+            c.begin_group("series", se.name);
+            std::vector<std::pair<double, double>> points;
+            for (std::size_t i = 0; i < se.x.size(); ++i)
+                points.emplace_back(X(se.x[i]), Y(se.y[i]));
+            c.polyline(points, colour(k), 2, dash(k));
+            for (const auto& [x, y] : points) c.disc(x, y, 2.5, colour(k));
+            c.end_group();
+        }
+        c.end_group();
     }
-    if (plot.log_y) {
-        for (int d = dlo; d <= dhi; ++d) {
-            const double y = Y(std::pow(10.0, d));
-            s << "<line x1=\"" << left << "\" y1=\"" << number(y) << "\" x2=\"" << left + pw
-              << "\" y2=\"" << number(y) << "\" stroke=\"#ddd\"/>\n"
-              << "<text x=\"" << left - 6 << "\" y=\"" << number(y + 4)
-              << "\" text-anchor=\"end\">1e" << d << "</text>\n";
-        }
-        const double yz = top + ph - zero_band / 2;
-        s << "<line x1=\"" << left << "\" y1=\"" << number(yz) << "\" x2=\"" << left + pw
-          << "\" y2=\"" << number(yz) << "\" stroke=\"#999\" stroke-dasharray=\"4 3\"/>\n"
-          << "<text x=\"" << left - 6 << "\" y=\"" << number(top + ph + 4)
-          << "\" text-anchor=\"end\">0</text>\n";
-    } else {
-        for (int i = 0; i <= 5; ++i) {
-            const double v = ymin + (ymax - ymin) * i / 5;
-            s << "<line x1=\"" << left << "\" y1=\"" << number(Y(v)) << "\" x2=\"" << left + pw
-              << "\" y2=\"" << number(Y(v)) << "\" stroke=\"#ddd\"/>\n"
-              << "<text x=\"" << left - 6 << "\" y=\"" << number(Y(v) + 4)
-              << "\" text-anchor=\"end\">" << v << "</text>\n";
-        }
-    }
-    s << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << pw << "\" height=\"" << ph
-      << "\" fill=\"none\" stroke=\"black\"/>\n"
-      << "<text x=\"" << number(left + pw / 2) << "\" y=\"" << H - 15
-      << "\" text-anchor=\"middle\">" << escape_xml(plot.x_label) << "</text>\n"
-      << "<text transform=\"translate(18," << number(top + ph / 2)
-      << ") rotate(-90)\" text-anchor=\"middle\">" << escape_xml(plot.y_label) << "</text>\n";
-    // Curves and legend.
-    for (std::size_t k = 0; k < plot.series.size(); ++k) {
-        const Series& se = plot.series[k];
-        const char* colour = palette[k % std::size(palette)];
-        s << "<polyline fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"2\" points=\"";
-        for (std::size_t i = 0; i < se.x.size(); ++i) {
-            s << number(X(se.x[i])) << ',' << number(Y(se.y[i])) << ' ';
-        }
-        s << "\"/>\n";
-        for (std::size_t i = 0; i < se.x.size(); ++i) {
-            s << "<circle cx=\"" << number(X(se.x[i])) << "\" cy=\"" << number(Y(se.y[i]))
-              << "\" r=\"2.5\" fill=\"" << colour << "\"/>\n";
-        }
+    c.text((left + right_edge) / 2, H - 15, plot.x_label, 12, Anchor::middle);
+    c.text(18, top + ph / 2, plot.y_label, 12, Anchor::middle, true);
+    c.begin_group("legend", "legend");
+    for (std::size_t k = 0; k < names.size(); ++k) {
         const double ly = top + 10 + 20 * double(k);
-        s << "<line x1=\"" << left + pw + 15 << "\" y1=\"" << ly << "\" x2=\"" << left + pw + 40
-          << "\" y2=\"" << ly << "\" stroke=\"" << colour << "\" stroke-width=\"2\"/>\n"
-          << "<text x=\"" << left + pw + 46 << "\" y=\"" << ly + 4 << "\">" << escape_xml(se.name)
-          << "</text>\n";
+        c.line(right_edge + 15, ly, right_edge + 40, ly, colour(k), 2, dash(k));
+        c.text(right_edge + 46, ly + 4, names[k], 12, Anchor::start);
     }
-    s << "</svg>\n";
-    return s.str();
+    c.end_group();
+}
+
+}  // namespace
+
+std::string render_svg(const LinePlot& plot) {
+    const PlotSize size = plot_size(plot);
+    SvgCanvas svg;
+    svg.out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << size.W << "\" height=\""
+            << size.H << "\" viewBox=\"0 0 " << size.W << ' ' << size.H
+            << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
+            << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+    draw_plot(plot, svg);
+    svg.out << "</svg>\n";
+    return svg.out.str();
+}
+
+Image render_plot_image(const LinePlot& plot) {
+    const PlotSize size = plot_size(plot);
+    RasterCanvas raster(size.W, size.H, 2);
+    draw_plot(plot, raster);
+    return std::move(raster.image);
 }
 
 }  // namespace exidel::research

@@ -142,15 +142,15 @@ PrecisionStudy run_precision_study(const PrecisionOptions& options, const RunOpt
                          "queries within 512-bit bound",
                          "smallest error-free p (measured)",
                          "wrong at p=53"};
+    // One panel per formulation, one line per family.
     LinePlot plot;
-    plot.title = "Wrong-sign rate of the MPFR kernel vs precision (near-degenerate families)";
+    plot.title = "Wrong-sign rate of the MPFR kernel vs precision, per family";
     plot.x_label = "significand bits p";
-    plot.y_label = "wrong-sign rate (all near-degenerate families pooled)";
+    plot.y_label = "wrong-sign rate (queries of the family)";
     plot.log_y = true;
     for (Formulation f : all_formulations) {
-        Series series{std::string(predicate_name(f)), {}, {}};
-        std::vector<std::uint64_t> pooled_wrong(bits.size(), 0);
-        std::uint64_t pooled_total = 0;
+        Panel& panel = plot.panels.emplace_back();
+        panel.title = std::string(predicate_name(f));
         for (testing::Family fam : families) {
             Cell& cell = cells[{int(f), int(fam)}];
             for (std::size_t p = 0; p < bits.size(); ++p) {
@@ -159,9 +159,13 @@ PrecisionStudy run_precision_study(const PrecisionOptions& options, const RunOpt
                     {std::string(predicate_name(f)), std::string(testing::family_name(fam)),
                      std::to_string(bits[p]), std::to_string(cell.wrong[p]),
                      std::to_string(cell.total), format_rate(cell.wrong[p], cell.total)});
-                pooled_wrong[p] += cell.wrong[p];
             }
-            pooled_total += cell.total;
+            Series& series = panel.series.emplace_back();
+            series.name = std::string(testing::family_name(fam));
+            for (std::size_t p = 0; p < bits.size(); ++p) {
+                series.x.push_back(bits[p]);
+                series.y.push_back(cell.total ? double(cell.wrong[p]) / double(cell.total) : 0);
+            }
             // Smallest tested p from which on no tested precision made an error.
             std::string smallest = "none up to " + std::to_string(bits.back());
             for (std::size_t p = bits.size(); p-- > 0;) {
@@ -185,16 +189,12 @@ PrecisionStudy run_precision_study(const PrecisionOptions& options, const RunOpt
                      ? "-"
                      : std::to_string(cell.wrong[std::size_t(at53 - bits.begin())])});
         }
-        for (std::size_t p = 0; p < bits.size(); ++p) {
-            series.x.push_back(bits[p]);
-            series.y.push_back(pooled_total ? double(pooled_wrong[p]) / double(pooled_total) : 0);
-        }
-        plot.series.push_back(std::move(series));
     }
 
     write_text_file(run.out / "precision.csv", rates.csv());
     write_text_file(run.out / "precision_thresholds.csv", thresholds.csv());
     write_text_file(run.out / "precision.svg", render_svg(plot));
+    write_png(run.out / "precision.png", render_plot_image(plot));
 
     std::string family_list;
     for (testing::Family fam : families) {
@@ -209,7 +209,11 @@ PrecisionStudy run_precision_study(const PrecisionOptions& options, const RunOpt
         "compared with the exact kernel. Families: " +
         family_list + ".");
     study.report.append(family_definitions(families));
+    study.report.paragraph(
+        "Wrong-sign rate against precision: one panel per formulation, one line per family "
+        "(rates of 0 on the dashed line at the bottom).");
     study.report.image("wrong-sign rate vs precision", "precision.svg");
+    study.report.link("precision.png", "precision.png");
     study.report.paragraph(
         "Smallest precision without errors, measured, beside the bit counts of "
         "proofs/bitcounts.md for our evaluation order (2b+3, 4b+8, 8b+12; an earlier count of "

@@ -830,6 +830,7 @@ TriangulationStudy report_study(const StudyPlan& plan, StudyTotals t, const RunO
         "Triangulations not certified Delaunay, MPFR kernel at p bits (determinant policy)";
     plot.x_label = "significand bits p";
     plot.y_label = "share of point sets with a wrong outcome";
+    Panel& panel = plot.panels.emplace_back();
     for (std::size_t op = 0; op < plan.methods.size(); ++op) {
         std::vector<std::string> row = columns.cells(plan.methods[op]);
         Series series;
@@ -847,7 +848,7 @@ TriangulationStudy report_study(const StudyPlan& plan, StudyTotals t, const RunO
             series.y.push_back(r.runs ? double(r.wrong) / double(r.runs) : 0.0);
         }
         precision_table.rows.push_back(std::move(row));
-        plot.series.push_back(std::move(series));
+        panel.series.push_back(std::move(series));
     }
     write_text_file(run.out / "triangulation_precision.csv", precision_table.csv());
     write_text_file(run.out / "precision.svg", render_svg(plot));

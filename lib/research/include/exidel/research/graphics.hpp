@@ -1,5 +1,6 @@
 // exidel::research: pictures. PNG through libpng (images of failure maps) and a small
-// SVG line plot (the precision curves), both written by the studies into their folder.
+// line plot (the precision curves) drawn as SVG and as an image for PNG, all written by the
+// studies into their folder.
 #pragma once
 
 #include <cstdint>
@@ -57,13 +58,28 @@ struct Series {
     std::vector<double> x, y;
 };
 
-struct LinePlot {
-    std::string title, x_label, y_label;
-    bool log_y = false;  ///< y values of 0 are drawn on a separate "0" line below the decades
+/// One chart of a line plot: its caption (may be empty) and its curves.
+struct Panel {
+    std::string title;
     std::vector<Series> series;
 };
 
-/// The plot as a standalone SVG document (about 720 x 420 px, axes, ticks, legend).
+/// Charts side by side with the same x and y scales and one legend: a series name keeps
+/// its colour (and dash, after the seven colours) in every panel, listed once in the legend.
+struct LinePlot {
+    std::string title, x_label, y_label;
+    bool log_y = false;  ///< y values of 0 are drawn on a separate "0" line below the decades
+    std::vector<Panel> panels;
+};
+
+/// The plot as a standalone SVG document (about 720 x 420 px for one panel, 280 px wider
+/// for each further one): title, axes, ticks, a panel caption above each chart, legend.
+/// Every panel is a <g class="panel"> and every curve a <g class="series">, each starting
+/// with a <title> naming it.
 std::string render_svg(const LinePlot& plot);
+
+/// The same drawing as render_svg, rasterised at twice its size (text in the bitmap font),
+/// for write_png.
+Image render_plot_image(const LinePlot& plot);
 
 }  // namespace exidel::research

@@ -53,7 +53,9 @@ struct FailureMapSpec {
     std::vector<std::size_t> order;  ///< argument i of the predicate is points[order[i]]
     int width = 256, height = 256;
     std::int64_t step = 1;  ///< ulps per cell
-    bool centered = false;  ///< window [-W/2, W/2) instead of [0, W)
+    /// The window's offsets: [-W/2, W/2) x [-H/2, H/2), the moving point at the centre cell
+    /// (the default); false: [0, W) x [0, H), the moving point at the bottom-left corner.
+    bool centered = true;
 
     std::string_view predicate() const {
         return space ? predicate_name(*space) : predicate_name(formulation);
