@@ -7,7 +7,10 @@
 #include <cstdint>
 #include <limits>
 #include <ostream>
+#include <span>
 #include <string_view>
+
+#include "exidel/predicates/types.hpp"
 
 namespace exidel::io::detail {
 
@@ -33,6 +36,33 @@ std::size_t for_each_line(std::string_view data, F&& f) {
         start = end + 1;
     }
     return number;
+}
+
+/// ".json" -> "json": the part of the file name after its last '.'; empty when there is
+/// none (a '.' in a directory name does not count).
+inline std::string_view extension_of(std::string_view path) {
+    const std::size_t dot = path.rfind('.'), slash = path.rfind('/');
+    if (dot == std::string_view::npos || (slash != std::string_view::npos && dot < slash)) {
+        return {};
+    }
+    return path.substr(dot + 1);
+}
+
+/// The smallest box holding `points`, {x0, y0, x1, y1}; all zero when empty (callers
+/// decide what an empty set's box is).
+struct Bounds {
+    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+inline Bounds bounding_box(std::span<const Point2> points) {
+    if (points.empty()) return {};
+    Bounds b{points[0].x, points[0].y, points[0].x, points[0].y};
+    for (const Point2& p : points) {
+        b.x0 = std::min(b.x0, p.x);
+        b.x1 = std::max(b.x1, p.x);
+        b.y0 = std::min(b.y0, p.y);
+        b.y1 = std::max(b.y1, p.y);
+    }
+    return b;
 }
 
 /// `line` without its '#' comment.

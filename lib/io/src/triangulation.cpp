@@ -117,14 +117,8 @@ void write_off(std::ostream& out, std::span<const Point2> points, const Triangul
 // The points' bounding box, padded where a side is zero (text.hpp's svg_box).
 detail::SvgBox bounds(std::span<const Point2> points) {
     if (points.empty()) return {};
-    double x0 = points[0].x, x1 = points[0].x, y0 = points[0].y, y1 = points[0].y;
-    for (const Point2& p : points) {
-        x0 = std::min(x0, p.x);
-        x1 = std::max(x1, p.x);
-        y0 = std::min(y0, p.y);
-        y1 = std::max(y1, p.y);
-    }
-    return detail::svg_box(x0, y0, x1, y1);
+    const detail::Bounds b = detail::bounding_box(points);
+    return detail::svg_box(b.x0, b.y0, b.x1, b.y1);
 }
 
 // Every edge of the triangulation once, as trails (walks along unused edges: one vertex
@@ -301,12 +295,7 @@ std::optional<TriangulationFormat> triangulation_format_from_name(std::string_vi
 }
 
 std::optional<TriangulationFormat> triangulation_format_from_path(std::string_view path) {
-    const std::size_t dot = path.rfind('.');
-    const std::size_t slash = path.rfind('/');
-    if (dot == std::string_view::npos || (slash != std::string_view::npos && dot < slash)) {
-        return std::nullopt;
-    }
-    const std::string_view extension = path.substr(dot + 1);
+    const std::string_view extension = detail::extension_of(path);
     if (extension == "ply-ascii") return std::nullopt;  // a format name, not an extension
     return triangulation_format_from_name(extension);
 }

@@ -352,12 +352,7 @@ std::optional<ProducedFormat> produced_format_from_name(std::string_view name) {
 }
 
 std::optional<ProducedFormat> produced_format_from_path(std::string_view path) {
-    const std::size_t dot = path.rfind('.');
-    const std::size_t slash = path.rfind('/');
-    if (dot == std::string_view::npos || (slash != std::string_view::npos && dot < slash)) {
-        return std::nullopt;
-    }
-    const std::optional<ProducedFormat> f = produced_format_from_name(path.substr(dot + 1));
+    const std::optional<ProducedFormat> f = produced_format_from_name(detail::extension_of(path));
     return f == ProducedFormat::simplices ? std::nullopt : f;
 }
 

@@ -303,14 +303,6 @@ void write_svg(std::ostream& out, std::span<const Point2> points, const ClippedV
         repeated_points(points), inside);
 }
 
-// ".json" -> "json"; empty when `path` has no extension.
-std::string_view extension(std::string_view path) {
-    const std::size_t dot = path.rfind('.'), slash = path.rfind('/');
-    if (dot == std::string_view::npos || (slash != std::string_view::npos && dot < slash))
-        return {};
-    return path.substr(dot + 1);
-}
-
 }  // namespace
 
 std::string_view to_string(VoronoiFormat f) noexcept {
@@ -332,7 +324,7 @@ std::optional<VoronoiFormat> voronoi_format_from_name(std::string_view name) {
 }
 
 std::optional<VoronoiFormat> voronoi_format_from_path(std::string_view path) {
-    return voronoi_format_from_name(extension(path));
+    return voronoi_format_from_name(detail::extension_of(path));
 }
 
 bool holds_unbounded_cells(VoronoiFormat format) noexcept {
@@ -341,13 +333,7 @@ bool holds_unbounded_cells(VoronoiFormat format) noexcept {
 
 Box default_clip_box(std::span<const Point2> sites) {
     if (sites.empty()) return {-1, -1, 1, 1};
-    double x0 = sites[0].x, x1 = sites[0].x, y0 = sites[0].y, y1 = sites[0].y;
-    for (const Point2& p : sites) {
-        x0 = std::min(x0, p.x);
-        x1 = std::max(x1, p.x);
-        y0 = std::min(y0, p.y);
-        y1 = std::max(y1, p.y);
-    }
+    auto [x0, y0, x1, y1] = detail::bounding_box(sites);
     const double side = std::max(detail::finite_span(x1 - x0), detail::finite_span(y1 - y0));
     const double margin = side > 0 ? default_clip_margin * side : 1;
     detail::widen(x0, x1, margin);
