@@ -30,6 +30,7 @@ std::string_view to_string(FailureKind kind) noexcept {
         case FailureKind::location_exceeded: return "location_exceeded";
         case FailureKind::cavity_inconsistent: return "cavity_inconsistent";
         case FailureKind::flips_exceeded: return "flips_exceeded";
+        case FailureKind::location_inconsistent: return "location_inconsistent";
     }
     return "unknown";
 }
