@@ -30,7 +30,8 @@ using CgalDT = CGAL::Delaunay_triangulation_2<Epick, Tds>;
 CgalDT cgal_triangulation(std::span<const Point2> points) {
     const auto first = first_occurrence(points);
     std::vector<std::pair<Epick::Point_2, std::uint32_t>> input;
-    for (std::uint32_t i = 0; i < points.size(); ++i) input.emplace_back(to_cgal(points[i]), first[i]);
+    for (std::uint32_t i = 0; i < points.size(); ++i)
+        input.emplace_back(to_cgal(points[i]), first[i]);
     return CgalDT(input.begin(), input.end());
 }
 
@@ -148,7 +149,8 @@ struct Oracle {
     CgalDT dt;
     std::set<Edge> cgal_edges, our_edges;
 
-    Oracle(std::span<const Point2> points, const Triangulation& t) : dt(cgal_triangulation(points)) {
+    Oracle(std::span<const Point2> points, const Triangulation& t)
+        : dt(cgal_triangulation(points)) {
         for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
             const auto f = e->first;
             const int i = e->second;
@@ -245,8 +247,8 @@ RC_GTEST_PROP(Locate, ExactKernelsAndOrdersAgree, ()) {
         exact(queries.size());
     Locator<AdaptiveKernel> adaptive(s.points, t);
     RC_ASSERT(!adaptive.locate(queries, hilbert).has_value());
-    RC_ASSERT(!adaptive.locate(queries, given, {.order = delaunay::LocateOrder::given})
-                   .has_value());
+    RC_ASSERT(
+        !adaptive.locate(queries, given, {.order = delaunay::LocateOrder::given}).has_value());
     RC_ASSERT(!adaptive.locate(queries, jump, {.order = delaunay::LocateOrder::jump}).has_value());
     Locator<GmpExactKernel> gmp(s.points, t);
     RC_ASSERT(!gmp.locate(queries, exact).has_value());
@@ -364,8 +366,8 @@ RC_GTEST_PROP(Locate, InexactKernelsAnswerOrFailTyped, ()) {
                   f->kind == delaunay::FailureKind::location_inconsistent);
     }
     if (t.collinear || queries.empty()) return;
-    for (const auto mode : {LyingKernel::random, LyingKernel::negative, LyingKernel::zero,
-                            LyingKernel::positive}) {
+    for (const auto mode :
+         {LyingKernel::random, LyingKernel::negative, LyingKernel::zero, LyingKernel::positive}) {
         Locator<LyingKernel> liar(s.points, t, LyingKernel{mode});
         const auto f = liar.locate(queries, out, {.order = delaunay::LocateOrder::given});
         if (mode == LyingKernel::zero) {
@@ -389,7 +391,8 @@ TEST(Locate, StepBoundStopsTheWalk) {
     Locator<AdaptiveKernel> locator(points, t);
     const std::vector<Point2> far = {{0.01, 0.01}, {0.99, 0.99}};
     std::vector<Location> out(2);
-    const auto f = locator.locate(far, out, {.order = delaunay::LocateOrder::given, .step_bound = 2});
+    const auto f =
+        locator.locate(far, out, {.order = delaunay::LocateOrder::given, .step_bound = 2});
     ASSERT_TRUE(f.has_value());
     EXPECT_EQ(f->kind, delaunay::FailureKind::location_exceeded);
 }

@@ -43,6 +43,7 @@
 #include <vector>
 
 #include "exidel/delaunay/detail/brio.hpp"
+#include "exidel/delaunay/detail/memory.hpp"
 #include "exidel/delaunay/detail/radix.hpp"
 #include "exidel/delaunay/parallel.hpp"
 #include "exidel/delaunay/result.hpp"
@@ -127,8 +128,7 @@ enum class WalkStatus : std::uint8_t { found, exceeded, inconsistent };
 /// P: points by input index; T, H: Triangulation::triangles and ::halfedges.
 template <PredicateKernel K>
 WalkStatus walk(const K& k, const Point2* P, const std::uint32_t* T, const std::int32_t* H,
-                Point2 q, std::uint32_t t, std::uint64_t bound, WalkRandom& random,
-                Location& out) {
+                Point2 q, std::uint32_t t, std::uint64_t bound, WalkRandom& random, Location& out) {
     std::size_t came = static_cast<std::size_t>(-1);  // the half-edge of t we entered by
     for (std::uint64_t step = 0; step < bound; ++step) {
         const std::size_t base = 3 * std::size_t{t};
@@ -211,8 +211,7 @@ public:
     /// inline, src/locate.cpp).
     template <PredicateKernel W>
     std::optional<Failure> locate_with(const W& walker, std::span<const Point2> queries,
-                                       std::span<Location> out,
-                                       const LocateOptions& options) const;
+                                       std::span<Location> out, const LocateOptions& options) const;
 
     const Triangulation& triangulation() const noexcept { return tri_; }
     std::span<const Point2> points() const noexcept { return points_; }
@@ -226,12 +225,25 @@ private:
     std::uint32_t jump_start(Point2 q) const;
     Location locate_collinear(Point2 q) const;
     template <PredicateKernel W>
-    Location walk_from(const W& walker, Point2 q, std::uint32_t start,
-                       detail::WalkRandom& random, std::uint64_t bound, std::size_t query) const;
+    Location walk_from(const W& walker, Point2 q, std::uint32_t start, detail::WalkRandom& random,
+                       std::uint64_t bound, std::size_t query) const;
 
     std::span<const Point2> points_;
     const Triangulation& tri_;
     K kernel_;
+    // The walks run on a copy of the mesh laid out for them: the triangles renumbered
+    // along a Hilbert curve through their centroids, the vertices in the order those
+    // triangles first use them, so that triangles near each other in the plane are near
+    // each other in memory (the Triangulation's own order need not be: its vertices are
+    // the input's, often random, and every step of a walk would miss the cache). The same
+    // triangles, corners in the same rotation: local half-edge 3k + j is the
+    // triangulation's 3 triangle_of_local_[k] + j.
+    detail::FreshVector<std::uint32_t> local_triangles_;    // corners, as local vertices
+    detail::FreshVector<std::int32_t> local_halfedges_;     // twins, as local half-edges
+    detail::FreshVector<Point2> local_points_;              // local vertex -> coordinates
+    detail::FreshVector<std::uint32_t> input_of_local_;     // local vertex -> input index
+    detail::FreshVector<std::uint32_t> triangle_of_local_;  // local triangle -> triangle
+    detail::FreshVector<std::uint32_t> local_of_triangle_;  // triangle -> local triangle
     std::vector<Sample> sample_;
     std::uint64_t bound_ = 0;
     std::int32_t last_ = -1;
@@ -273,8 +285,8 @@ Locator<K>::Locator(std::span<const Point2> points, const Triangulation& triangu
     }
     for (std::size_t e = 0; e < T.size(); ++e) {
         if (T[e] >= n) {
-            bad("triangles[" + std::to_string(e) + "] = " + std::to_string(T[e]) + " is not a point (" +
-                std::to_string(n) + " points)");
+            bad("triangles[" + std::to_string(e) + "] = " + std::to_string(T[e]) +
+                " is not a point (" + std::to_string(n) + " points)");
         }
         const std::int32_t twin = H[e];
         if (twin < -1 || twin >= static_cast<std::int64_t>(H.size()) ||
@@ -287,15 +299,55 @@ Locator<K>::Locator(std::span<const Point2> points, const Triangulation& triangu
     }
     const std::size_t m = T.size() / 3;
     bound_ = 4 * static_cast<std::uint64_t>(m) + 64;
-    if (m > 0) {
-        // About m^(1/3) vertices, each with a triangle of its, at random half-edges.
-        const auto size = std::max<std::size_t>(1, static_cast<std::size_t>(std::cbrt(double(m))));
-        detail::SplitMix64 rng{detail::order_seed};
-        sample_.reserve(size);
-        for (std::size_t i = 0; i < size; ++i) {
-            const std::size_t e = rng.below(T.size());
-            sample_.push_back({points_[T[e]], static_cast<std::uint32_t>(e / 3)});
+    if (m == 0) return;
+    // The triangles along a Hilbert curve through their (rounded) centroids.
+    {
+        detail::FreshVector<Point2> centroids(m);
+        for (std::size_t t = 0; t < m; ++t) {
+            const Point2 a = points_[T[3 * t]], b = points_[T[3 * t + 1]],
+                         c = points_[T[3 * t + 2]];
+            centroids[t] = {a.x / 3 + b.x / 3 + c.x / 3, a.y / 3 + b.y / 3 + c.y / 3};
         }
+        const std::vector<std::uint32_t> keys = detail::hilbert_keys(centroids);
+        detail::FreshVector<detail::KeyIndex> sorted(m);
+        for (std::size_t t = 0; t < m; ++t) sorted[t] = {keys[t], static_cast<std::uint32_t>(t)};
+        detail::radix_sort(sorted);
+        triangle_of_local_.resize(m);
+        local_of_triangle_.resize(m);
+        for (std::size_t k = 0; k < m; ++k) {
+            triangle_of_local_[k] = sorted[k].index;
+            local_of_triangle_[sorted[k].index] = static_cast<std::uint32_t>(k);
+        }
+    }
+    local_triangles_.resize(T.size());
+    local_halfedges_.resize(T.size());
+    detail::FreshVector<std::uint32_t> local_of_input(n, no_vertex);
+    input_of_local_.reserve(n);
+    local_points_.reserve(n);
+    for (std::size_t k = 0; k < m; ++k) {
+        const std::size_t t = triangle_of_local_[k];
+        for (std::size_t j = 0; j < 3; ++j) {
+            const std::uint32_t v = T[3 * t + j];
+            std::uint32_t& local = local_of_input[v];
+            if (local == no_vertex) {
+                local = static_cast<std::uint32_t>(input_of_local_.size());
+                input_of_local_.push_back(v);
+                local_points_.push_back(points_[v]);
+            }
+            local_triangles_[3 * k + j] = local;
+            const std::int32_t twin = H[3 * t + j];
+            local_halfedges_[3 * k + j] =
+                twin < 0 ? -1
+                         : static_cast<std::int32_t>(3 * local_of_triangle_[twin / 3] + twin % 3);
+        }
+    }
+    // About m^(1/3) vertices, each with a triangle of its, at random half-edges.
+    const auto size = std::max<std::size_t>(1, static_cast<std::size_t>(std::cbrt(double(m))));
+    detail::SplitMix64 rng{detail::order_seed};
+    sample_.reserve(size);
+    for (std::size_t i = 0; i < size; ++i) {
+        const std::size_t e = rng.below(T.size());
+        sample_.push_back({local_points_[local_triangles_[e]], static_cast<std::uint32_t>(e / 3)});
     }
 }
 
@@ -336,13 +388,19 @@ Location Locator<K>::locate_collinear(Point2 q) const {
 template <PredicateKernel K>
 template <PredicateKernel W>
 Location Locator<K>::walk_from(const W& walker, Point2 q, std::uint32_t start,
-                              detail::WalkRandom& random, std::uint64_t bound,
-                              std::size_t query) const {
+                               detail::WalkRandom& random, std::uint64_t bound,
+                               std::size_t query) const {
     Location out;
-    const auto status = detail::walk(walker, points_.data(), tri_.triangles.data(),
-                                     tri_.halfedges.data(), q, start, bound, random, out);
-    if (status == detail::WalkStatus::found) [[likely]]
+    const auto status = detail::walk(walker, local_points_.data(), local_triangles_.data(),
+                                     local_halfedges_.data(), q, start, bound, random, out);
+    if (status == detail::WalkStatus::found) [[likely]] {
+        // From the local numbers to the triangulation's.
+        const std::uint32_t t = triangle_of_local_[static_cast<std::uint32_t>(out.triangle)];
+        if (out.edge >= 0) out.edge = static_cast<std::int32_t>(3 * t + out.edge % 3);
+        out.triangle = static_cast<std::int32_t>(t);
+        if (out.vertex != no_vertex) out.vertex = input_of_local_[out.vertex];
         return out;
+    }
     const std::string which = query == no_index ? "the query" : "query " + std::to_string(query);
     if (status == detail::WalkStatus::exceeded) {
         throw FailureError(Failure{FailureKind::location_exceeded, query, no_index,
@@ -366,15 +424,15 @@ Location Locator<K>::locate(Point2 q, std::int32_t hint) {
         throw std::out_of_range("Locator::locate: hint " + std::to_string(hint) +
                                 " is not a triangle");
     }
-    const std::uint32_t start = hint < 0 ? jump_start(q) : static_cast<std::uint32_t>(hint);
+    const std::uint32_t start =
+        hint < 0 ? jump_start(q) : local_of_triangle_[static_cast<std::uint32_t>(hint)];
     const Location where = walk_from(kernel_, q, start, random_, bound_, no_index);
     last_ = where.triangle;
     return where;
 }
 
 template <PredicateKernel K>
-std::optional<Failure> Locator<K>::locate(std::span<const Point2> queries,
-                                          std::span<Location> out,
+std::optional<Failure> Locator<K>::locate(std::span<const Point2> queries, std::span<Location> out,
                                           const LocateOptions& options) const {
     if constexpr (std::is_same_v<K, AdaptiveKernel>) {
         return detail::locate_adaptive(*this, queries, out, options);
@@ -406,15 +464,22 @@ std::optional<Failure> Locator<K>::locate_with(const W& walker, std::span<const 
         });
         return std::nullopt;
     }
-    std::vector<std::uint32_t> order;
+    // Hilbert order: the queries gathered in curve order, walked, and the answers
+    // scattered back, so that the walks read and write consecutive memory.
+    detail::FreshVector<detail::KeyIndex> sorted;
+    detail::FreshVector<Point2> gathered;
+    detail::FreshVector<Location> answers;
     if (options.order == LocateOrder::hilbert) {
         const std::vector<std::uint32_t> keys = detail::hilbert_keys(queries);
-        std::vector<detail::KeyIndex> sorted(n);
+        sorted.resize(n);
         for (std::size_t i = 0; i < n; ++i) sorted[i] = {keys[i], static_cast<std::uint32_t>(i)};
         detail::radix_sort(sorted);
-        order.resize(n);
-        for (std::size_t i = 0; i < n; ++i) order[i] = sorted[i].index;
+        gathered.resize(n);
+        for (std::size_t i = 0; i < n; ++i) gathered[i] = queries[sorted[i].index];
+        answers.resize(n);
     }
+    const std::span<const Point2> walked = sorted.empty() ? queries : gathered;
+    const std::span<Location> written = sorted.empty() ? out : std::span<Location>(answers);
     const std::uint64_t bound = options.step_bound != 0 ? options.step_bound : bound_;
     const bool jump = options.order == LocateOrder::jump;
     try {
@@ -422,18 +487,19 @@ std::optional<Failure> Locator<K>::locate_with(const W& walker, std::span<const 
             detail::WalkRandom random{static_cast<std::uint32_t>(0x2545f491u + 0x9e3779b9u * c)};
             std::int32_t previous = -1;
             for (std::size_t i = c * chunk; i < std::min(n, (c + 1) * chunk); ++i) {
-                const std::size_t query = order.empty() ? i : order[i];
-                const Point2 q = queries[query];
-                const std::uint32_t start = jump || previous < 0
-                                                ? jump_start(q)
-                                                : static_cast<std::uint32_t>(previous);
-                out[query] = walk_from(walker, q, start, random, bound, query);
-                previous = out[query].triangle;
+                const Point2 q = walked[i];
+                const std::uint32_t start =
+                    jump || previous < 0 ? jump_start(q)
+                                         : local_of_triangle_[static_cast<std::uint32_t>(previous)];
+                written[i] = walk_from(walker, q, start, random, bound,
+                                       sorted.empty() ? i : sorted[i].index);
+                previous = written[i].triangle;
             }
         });
     } catch (FailureError& e) {
         return std::move(e.failure);
     }
+    for (std::size_t i = 0; i < sorted.size(); ++i) out[sorted[i].index] = answers[i];
     return std::nullopt;
 }
 
