@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import re
 from dataclasses import dataclass
 
 import numpy as np
@@ -13,6 +14,89 @@ from . import _core
 def default_threads():
     """The thread count the exidel command uses by default: the hardware's."""
     return max(1, os.cpu_count() or 1)
+
+
+# qhull's options (scipy's qhull_options=). exidel computes the exact Delaunay triangulation
+# of every point, so the options that steer qhull's floating-point construction (scaling for
+# precision, joggling, merging, keeping coplanar points, triangulating merged facets) have
+# nothing to act on and are accepted silently; Qbb and Qz keep one visible effect, the scale
+# of the lifted coordinate (paraboloid_scale, paraboloid_shift). Every other option would
+# change the answer (QbB scales the input, Qu is furthest-site, QGn/QVn select facets) or
+# concerns qhull's output files and tracing: it raises ValueError naming it.
+_QHULL_SILENT = ("Qbb", "Qc", "Qz", "Qt", "QJ", "Qx", "Q11", "Q12", "Pp")
+_QHULL_JOGGLE = re.compile(r"QJ(\d+(\.\d*)?|\.\d+)?([eE][-+]?\d+)?$")
+# scipy refuses these with incremental=True (they rescale or add a point once, at the start).
+_QHULL_NOT_INCREMENTAL = ("Qbb", "Qbk", "QBk", "QbB", "Qz")
+_QHULL_WHY = {
+    "Qu": "the furthest-site triangulation",
+    "QbB": "it scales the input to the unit cube, which changes its Delaunay triangulation",
+    "Qbk": "it scales a coordinate of the input, which changes its Delaunay triangulation",
+    "QBk": "it scales a coordinate of the input, which changes its Delaunay triangulation",
+    "QG": "it selects 'good' facets (scipy's .good)",
+    "QV": "it selects 'good' facets (scipy's .good)",
+}
+
+
+def parse_qhull_options(options, incremental, default, default_incremental):
+    """The set of qhull option tokens of `options` (scipy's qhull_options= string; None: the
+    class's scipy default), after scipy's incremental-mode check. Raises ValueError naming an
+    option that exidel does not accept."""
+    if options is None:
+        options = default_incremental if incremental else default
+    if not isinstance(options, str):
+        raise TypeError(f"qhull_options: expected a str, got {type(options).__name__}")
+    tokens = options.split()
+    if incremental:
+        bad = [t for t in _QHULL_NOT_INCREMENTAL if t in tokens]
+        if bad:
+            raise ValueError(f"Qhull options {bad!r} are incompatible with incremental mode")
+    for t in tokens:
+        if t in _QHULL_SILENT or _QHULL_JOGGLE.match(t):
+            continue
+        why = next((w for k, w in _QHULL_WHY.items() if t.startswith(k)), None)
+        raise ValueError(
+            f"qhull_options: exidel does not accept {t!r}"
+            + (f" ({why})" if why else "")
+            + "; exidel computes the exact Delaunay triangulation and accepts only the options "
+            "that cannot change it: " + ", ".join(_QHULL_SILENT) + " (QJ with or without an "
+            "amount)")
+    return frozenset("QJ" if _QHULL_JOGGLE.match(t) else t for t in tokens)
+
+
+def _split(x):
+    """Veltkamp's split of |x| <= 1: x == hi + lo exactly, each with at most 26 bits."""
+    c = 134217729.0 * x
+    hi = c - (c - x)
+    return hi, x - hi
+
+
+def _det2(a, b, c, d):
+    """a d - b c for |a|, |b|, |c|, |d| <= 1 within a few ulps of the exact value, where the
+    plain formula can lose every digit: both products and their difference are split into
+    exact sums of doubles (Dekker's product, Knuth's sum) and the parts added smallest
+    last."""
+    def product(x, y):
+        p = x * y
+        xh, xl = _split(x)
+        yh, yl = _split(y)
+        return p, xl * yl - (((p - xh * yh) - xl * yh) - xh * yl)
+
+    def total(x, y):
+        s = x + y
+        z = s - x
+        return s, (x - (s - z)) + (y - z)
+    p, ep = product(a, d)
+    q, eq = product(b, c)
+    d1, e1 = total(p, -q)
+    d2, e2 = total(ep, -eq)
+    return (d1 + d2) + (e1 + e2)
+
+
+def _scale_rows(v):
+    """v (rows of vectors) divided by a power of two per row, exactly, so that the largest
+    entry of each row is in [0.5, 1); the direction of each row is unchanged."""
+    _, e = np.frexp(np.max(np.abs(v), axis=-1))
+    return np.ldexp(v, -e[..., None]), e
 
 
 class TriangulationError(RuntimeError):
@@ -37,7 +121,8 @@ class Delaunay:
     """The Delaunay triangulation of 2D points, exact with an exact kernel.
 
     Delaunay(points, kernel="adaptive", algorithm="external", incircle="determinant",
-             order="auto", threads=None, counters=False)
+             order="auto", threads=None, counters=False, *, incremental=False,
+             qhull_options=None)
 
     points     array of shape (n, 2), float64 (other dtypes are converted once). Every
                finite input is accepted: duplicates (kept out of the triangulation and
@@ -56,6 +141,17 @@ class Delaunay:
     threads    worker threads of the strips order (the result does not depend on it);
                None (the default): the hardware's thread count, as the exidel command.
     counters   record predicate calls, flips, ... in .stats["counters"].
+    incremental  scipy's: allow add_points (below).
+    qhull_options  scipy's qhull option string, for code written for scipy. exidel always
+               answers the exact, unjoggled Delaunay triangulation of every point, so the
+               options that only steer qhull's floating-point construction are accepted
+               and change nothing in the triangulation: Qbb, Qc, Qz, Qt, QJ (joggling:
+               exidel never needs to perturb the input, and does not), Qx, Q11, Q12, Pp.
+               Qbb and Qz keep their one visible effect, the scale of the lifted
+               coordinate (paraboloid_scale, paraboloid_shift). Any other option raises
+               ValueError naming it (QbB would triangulate scaled points, Qu is the
+               furthest-site triangulation, QGn selects facets). None (the default) is
+               scipy's default: "Qbb Qc Qz Q12", and "Qc" when incremental.
 
     Attributes with scipy's names and meaning:
       points      (n, 2) float64, the input
@@ -64,7 +160,12 @@ class Delaunay:
                   triangle i, -1 on the boundary
       convex_hull (h, 2) int32, the boundary edges, counter-clockwise
       vertex_neighbor_vertices  (indptr, indices) as in scipy
+      vertex_to_simplex  (n,) int32, a triangle holding each point
+      transform   (m, 3, 2) float64, the barycentric transforms
+      equations, paraboloid_scale, paraboloid_shift, lift_points(x), plane_distance(xi):
+                  the triangles as facets of the lifted points, with qhull's scaling
       nsimplex, npoints, ndim
+      add_points(points, restart=False), close()
     exidel's own:
       hull        (h,) int32, the boundary cycle counter-clockwise from the
                   lexicographically smallest point, collinear boundary points included
@@ -76,20 +177,31 @@ class Delaunay:
                   all on one line)
       stats       algorithm, order, strips, sizes (and counters when asked)
     Unlike scipy, no point is ever left out (.coplanar is always empty except for the
-    duplicates, which scipy also reports there) and nothing is joggled.
+    duplicates, which scipy also reports there) and nothing is joggled. The arrays computed
+    from the triangles (neighbors, transform, equations, vertex_to_simplex, ...) are built
+    on first use and kept until add_points changes the triangulation.
     """
 
     ndim = 2
 
     def __init__(self, points, kernel="adaptive", algorithm="external", incircle="determinant",
-                 order="auto", threads=None, counters=False):
-        self.points = np.ascontiguousarray(points, dtype=np.float64)
+                 order="auto", threads=None, counters=False, *, incremental=False,
+                 qhull_options=None):
+        self._qhull_options = parse_qhull_options(qhull_options, incremental,
+                                                  "Qbb Qc Qz Q12", "Qc")
+        self._settings = (kernel, algorithm, incircle, order, threads, counters)
+        self._incremental = bool(incremental)
+        self._triangulate(np.ascontiguousarray(points, dtype=np.float64))
+
+    def _triangulate(self, points):
+        kernel, algorithm, incircle, order, threads, counters = self._settings
         threads = default_threads() if threads is None else threads
-        r = _core.triangulate(self.points, kernel, algorithm, incircle, order, threads, counters)
+        r = _core.triangulate(points, kernel, algorithm, incircle, order, threads, counters)
         failure = r.get("failure")
         if failure is not None:
             raise TriangulationError(failure["kind"], failure["input_index"],
                                      failure["insertion"], failure["message"])
+        self.points = points
         self.kernel = _core.kernel_name(kernel)
         self.simplices = r["triangles"]
         self.halfedges = r["halfedges"]
@@ -109,7 +221,37 @@ class Delaunay:
         }
         if counters:
             self.stats["counters"] = r["counters"]
+        # Built on first use, from the arrays above.
         self._neighbors = None
+        self._transform = None
+        self._equations = None
+        self._paraboloid = None
+        self._vertex_to_simplex = None
+
+    def add_points(self, points, restart=False):
+        """Adds points (an (k, 2) array) to a triangulation made with incremental=True, with
+        scipy's semantics: the new points get the indices npoints, npoints + 1, ..., and
+        every attribute describes the triangulation of all points afterwards. Raises
+        RuntimeError when the triangulation was not made incremental or close() was called,
+        ValueError when `points` is not (k, 2).
+
+        Each call triangulates all the points again, exactly, with the same settings: the
+        result is the exact triangulation, but a call costs as much as the first one (no
+        point is inserted into the existing triangles). `restart` is accepted for scipy's
+        sake and changes nothing: every call starts over."""
+        if not self._incremental:
+            raise RuntimeError("incremental mode not enabled or already closed")
+        points = np.asarray(points)
+        if points.ndim != 2 or points.shape[1] != self.ndim:
+            raise ValueError("invalid size for new points array")
+        if points.size == 0:
+            return
+        self._triangulate(np.concatenate([self.points, points.astype(np.float64)]))
+
+    def close(self):
+        """Ends incremental mode (scipy's close): add_points raises RuntimeError afterwards.
+        The triangulation and its attributes stay."""
+        self._incremental = False
 
     @property
     def npoints(self):
@@ -128,6 +270,135 @@ class Delaunay:
             twin = self.halfedges[e]
             self._neighbors = np.where(twin >= 0, twin // 3, -1).astype(np.int32)
         return self._neighbors
+
+    @property
+    def vertex_to_simplex(self):
+        """(n,) int32: for each point, a triangle that has it as a vertex; -1 for a point
+        that is no vertex (a duplicate: its first occurrence is the vertex, see
+        vertex_of_input) and for every point when there are no triangles. Which of the
+        point's triangles is given is arbitrary, as in scipy. (scipy writes the nearest
+        vertex's index, .coplanar[:, 2], for a point it left out; exidel writes -1.)"""
+        if self._vertex_to_simplex is None:
+            v = np.full(self.npoints, -1, dtype=np.int32)
+            v[self.simplices.reshape(-1)] = np.repeat(np.arange(self.nsimplex, dtype=np.int32), 3)
+            self._vertex_to_simplex = v
+        return self._vertex_to_simplex
+
+    @property
+    def transform(self):
+        """(m, 3, 2) float64, scipy's barycentric transforms: for triangle i with vertices
+        (p0, p1, p2), transform[i, :2] is the inverse of T = [p0 - p2, p1 - p2] (as columns)
+        and transform[i, 2] is r = p2, so the barycentric coordinates of x are
+        c = transform[i, :2] @ (x - r) and 1 - c.sum(). T is formed from the rounded
+        differences as in scipy; its inverse is the adjugate over a determinant computed
+        with error-free products and sums (after exact power-of-two scaling), so every
+        triangle gets a finite inverse within a few ulps of that of T, including the very
+        thin triangles for which scipy writes NaN (every exidel triangle has positive
+        area). (0, 3, 2)
+        without triangles."""
+        if self._transform is None:
+            s = self.simplices
+            r = self.points[s[:, 2]]
+            # d[i, j] = p_j - r: the columns of T.
+            d = self.points[s[:, :2]] - r[:, None, :]
+            t = np.stack([d[:, 0, 0], d[:, 1, 0], d[:, 0, 1], d[:, 1, 1]], axis=1)
+            t, e = _scale_rows(t)
+            a, b, c, dd = t.T
+            det = _det2(a, b, c, dd)
+            inverse = np.stack([dd, -b, -c, a], axis=1) / det[:, None]
+            out = np.empty((self.nsimplex, 3, 2), dtype=np.float64)
+            out[:, :2, :] = np.ldexp(inverse, -e[:, None]).reshape(-1, 2, 2)
+            out[:, 2, :] = r
+            self._transform = out
+        return self._transform
+
+    def _scale_shift(self):
+        """qhull's scaling of the lifted coordinate under options Qbb (and Qz), the numbers
+        scipy reports."""
+        if self._paraboloid is None:
+            scale, shift = 1.0, 0.0
+            p = self.points
+            if "Qbb" in self._qhull_options and p.shape[0] > 0:
+                lifted = p[:, 0] * p[:, 0] + p[:, 1] * p[:, 1]
+                low, high = lifted.min(), lifted.max()
+                newhigh = np.abs(p).max()
+                if "Qz" in self._qhull_options:
+                    # qhull's point at infinity: above the centroid (inside the coordinate
+                    # range), at 1.1 times the highest lifted point.
+                    high = high * 1.1
+                if high > low:
+                    scale = float(newhigh / (high - low))
+                    shift = float(-low * scale)
+                if not (np.isfinite(scale) and np.isfinite(shift)):
+                    scale, shift = 1.0, 0.0
+            self._paraboloid = (scale, shift)
+        return self._paraboloid
+
+    @property
+    def paraboloid_scale(self):
+        """scipy's scale of the lifted coordinate: with qhull option Qbb (in the default),
+        qhull maps x^2 + y^2 from [low, high] (the lowest lifted input point; the highest,
+        times 1.1 with Qz for its point at infinity) onto [0, m], m the largest absolute
+        coordinate: the scale is m / (high - low). 1.0 without Qbb (incremental mode) and
+        when every point lifts to the same height (where qhull stops with an error)."""
+        return self._scale_shift()[0]
+
+    @property
+    def paraboloid_shift(self):
+        """scipy's shift of the lifted coordinate: -low * paraboloid_scale (0.0 without
+        Qbb)."""
+        return self._scale_shift()[1]
+
+    def lift_points(self, x):
+        """Lifts points (shape (..., 2)) onto qhull's paraboloid: (..., 3) with the last
+        coordinate (x^2 + y^2) * paraboloid_scale + paraboloid_shift, as scipy."""
+        x = np.asarray(x, dtype=np.float64)
+        if x.shape[-1:] != (self.ndim,):
+            raise ValueError(f"lift_points: expected points of shape (..., 2), got {x.shape}")
+        scale, shift = self._scale_shift()
+        z = np.empty(x.shape[:-1] + (self.ndim + 1,), dtype=np.float64)
+        z[..., :-1] = x
+        z[..., -1] = (x ** 2).sum(axis=-1) * scale + shift
+        return z
+
+    @property
+    def equations(self):
+        """(m, 4) float64, scipy's [normal, offset] of each triangle's plane through its
+        lifted vertices (lift_points): unit normal pointing down (out of the lower hull),
+        normal . z + offset = 0 on the plane; the lifted input points lie on or above every
+        plane, at distance <= 0 (plane_distance). The lifted differences are formed as
+        (x1 - x0)(x1 + x0) + (y1 - y0)(y1 + y0), not as differences of lifted values.
+        (0, 4) without triangles."""
+        if self._equations is None:
+            scale, _ = self._scale_shift()
+            s = self.simplices
+            p0 = self.points[s[:, 0]]
+            def edge(k):
+                p = self.points[s[:, k]]
+                d = p - p0
+                dz = (d[:, 0] * (p[:, 0] + p0[:, 0]) + d[:, 1] * (p[:, 1] + p0[:, 1])) * scale
+                return _scale_rows(np.stack([d[:, 0], d[:, 1], dz], axis=1))[0]
+            u, v = edge(1), edge(2)
+            # The counter-clockwise triangle's u x v points up; qhull's lower facets down.
+            n = -np.cross(u, v)
+            n /= np.sqrt((n * n).sum(axis=1))[:, None]
+            z0 = self.lift_points(p0)
+            out = np.empty((self.nsimplex, 4), dtype=np.float64)
+            out[:, :3] = n
+            out[:, 3] = -(n * z0).sum(axis=1)
+            self._equations = out
+        return self._equations
+
+    def plane_distance(self, xi):
+        """Signed distances from the lifted points xi (shape (..., 2)) to every triangle's
+        plane (equations): shape (..., nsimplex), as scipy's. Negative above a plane."""
+        xi = np.asarray(xi, dtype=np.float64)
+        if xi.shape[-1:] != (self.ndim,):
+            raise ValueError("xi has different dimensionality than triangulation")
+        z = self.lift_points(xi.reshape(-1, self.ndim))
+        eq = self.equations
+        out = z @ eq[:, :3].T + eq[:, 3]
+        return out.reshape(xi.shape[:-1] + (self.nsimplex,))
 
     @property
     def convex_hull(self):

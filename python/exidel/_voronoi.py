@@ -8,7 +8,7 @@ import gc
 import numpy as np
 
 from . import _core
-from ._delaunay import TriangulationError, default_threads
+from ._delaunay import TriangulationError, default_threads, parse_qhull_options
 
 
 class ClippedVoronoi:
@@ -34,7 +34,8 @@ class ClippedVoronoi:
 class Voronoi:
     """The Voronoi diagram of 2D points.
 
-    Voronoi(points, kernel="adaptive", algorithm="external", threads=None)
+    Voronoi(points, kernel="adaptive", algorithm="external", threads=None, *,
+            incremental=False, qhull_options=None)
 
     Every vertex is the centre of a maximal set of exactly cocircular Delaunay triangles
     (decided by the kernel's in-circle test, never by a tolerance) and its coordinates are
@@ -42,11 +43,19 @@ class Voronoi:
     centre beyond the largest double raises ValueError; an inexact kernel's failed
     triangulation raises exidel.TriangulationError.
 
+    incremental and qhull_options are scipy's, as for exidel.Delaunay: the options that
+    cannot change an exact diagram (Qbb, Qc, Qz, Qt, QJ, Qx, Q11, Q12, Pp) are accepted,
+    any other raises ValueError naming it; with incremental=True, add_points(points,
+    restart=False) computes the diagram of all points again, exactly (a call costs as much
+    as the first), and close() ends incremental mode.
+
     scipy's names and meaning:
       points, vertices (V, 2), regions (one list of vertex indices per input point,
       counter-clockwise, with -1 where an unbounded cell goes to infinity),
       point_region (input point -> its entry of regions: here the identity),
-      ridge_points (r, 2), ridge_vertices (list of [v, w], -1 for a point at infinity)
+      ridge_points (r, 2), ridge_vertices (list of [v, w], -1 for a point at infinity),
+      ridge_dict ({(p, q): [v, w]} over the rows of ridge_points, the values the lists of
+      ridge_vertices), add_points, close
     exidel's own:
       vertex_sites   per vertex, every site exactly equidistant, counter-clockwise (a
                      list of lists of ints, as regions)
@@ -63,14 +72,23 @@ class Voronoi:
 
     ndim = 2
 
-    def __init__(self, points, kernel="adaptive", algorithm="external", threads=None):
-        self.points = np.ascontiguousarray(points, dtype=np.float64)
+    def __init__(self, points, kernel="adaptive", algorithm="external", threads=None, *,
+                 incremental=False, qhull_options=None):
+        self._qhull_options = parse_qhull_options(qhull_options, incremental, "Qbb Qc Qz", "Qc")
+        self._settings = (kernel, algorithm, threads)
+        self._incremental = bool(incremental)
+        self._build(np.ascontiguousarray(points, dtype=np.float64))
+
+    def _build(self, points):
+        kernel, algorithm, threads = self._settings
         threads = default_threads() if threads is None else threads
-        self._data = _core.VoronoiData(self.points, kernel, algorithm, threads)
-        failure = self._data.failure()
+        data = _core.VoronoiData(points, kernel, algorithm, threads)
+        failure = data.failure()
         if failure is not None:
             raise TriangulationError(*failure)
-        d = self._data.arrays()
+        d = data.arrays()
+        self.points = points
+        self._data = data
         self._arrays = d
         self.vertices = d["vertices"]
         self.unbounded = d["unbounded"]
@@ -138,6 +156,31 @@ class Voronoi:
         v = self.vertex_of_triangle[e // 3].astype(np.int64)
         w = np.where(twin[e] < 0, -1, self.vertex_of_triangle[np.maximum(twin[e], 0) // 3])
         return points, np.stack([w, v], axis=1).tolist()
+
+    @property
+    def ridge_dict(self):
+        """scipy's {(p, q): [v, w]}: for each row (p, q) of ridge_points, its entry of
+        ridge_vertices (the same list objects)."""
+        return self._cached("ridge_dict", lambda: dict(zip(
+            map(tuple, self.ridge_points.tolist()), self.ridge_vertices)))
+
+    def add_points(self, points, restart=False):
+        """Adds points (an (k, 2) array) to a diagram made with incremental=True, with
+        scipy's semantics and errors (RuntimeError when not incremental or closed,
+        ValueError for a shape other than (k, 2)). Each call computes the diagram of all
+        points again, exactly; `restart` changes nothing."""
+        if not self._incremental:
+            raise RuntimeError("incremental mode not enabled or already closed")
+        points = np.asarray(points)
+        if points.ndim != 2 or points.shape[1] != self.ndim:
+            raise ValueError("invalid size for new points array")
+        if points.size == 0:
+            return
+        self._build(np.concatenate([self.points, points.astype(np.float64)]))
+
+    def close(self):
+        """Ends incremental mode (scipy's close): add_points raises RuntimeError afterwards."""
+        self._incremental = False
 
     @property
     def npoints(self):
