@@ -53,8 +53,10 @@ Input make_input(const std::string& input, std::size_t n, std::size_t q) {
     bench::Rng rng(20261205);
     Input in;
     if (input == "uniform") {
-        for (std::size_t i = 0; i < n; ++i) in.points.push_back({bench::unit(rng), bench::unit(rng)});
-        for (std::size_t i = 0; i < q; ++i) in.queries.push_back({bench::unit(rng), bench::unit(rng)});
+        for (std::size_t i = 0; i < n; ++i)
+            in.points.push_back({bench::unit(rng), bench::unit(rng)});
+        for (std::size_t i = 0; i < q; ++i)
+            in.queries.push_back({bench::unit(rng), bench::unit(rng)});
     } else if (input == "grid") {
         const auto side = static_cast<std::size_t>(std::sqrt(static_cast<double>(n)));
         for (std::size_t i = 0; i < side; ++i)
@@ -163,10 +165,11 @@ int main(int argc, char** argv) {
         ++counts[static_cast<int>(where[i].kind)];
     }
     const double ours = median(ours_ms), cgal = median(cgal_ms);
-    std::printf("input %s, n = %zu points (%zu triangles), %zu queries, medians of %d "
-                "interleaved runs (ms)\n",
-                input.c_str(), in.points.size(), res.triangulation.triangle_count(),
-                in.queries.size(), reps);
+    std::printf(
+        "input %s, n = %zu points (%zu triangles), %zu queries, medians of %d "
+        "interleaved runs (ms)\n",
+        input.c_str(), in.points.size(), res.triangulation.triangle_count(), in.queries.size(),
+        reps);
     std::printf("queries: %zu inside, %zu on an edge, %zu on a vertex, %zu outside\n", counts[0],
                 counts[1], counts[2], counts[3]);
     std::printf("exidel Locator (adaptive), Hilbert batch  %9.1f\n", ours);

@@ -117,6 +117,28 @@ class TriangulationError(RuntimeError):
         self.message = message
 
 
+@dataclass(frozen=True)
+class Location:
+    """Where queries lie (Delaunay.locate): arrays of the queries' shape.
+
+    kind     int8: 0 inside, 1 on an edge, 2 on a vertex, 3 outside (exidel.location_kinds)
+    simplex  int32: a triangle holding the query, or outside the triangle of a hull edge
+             that sees it; -1 without triangles
+    edge     int32: the half-edge the query is on (on_edge), or a hull half-edge that sees
+             it (outside); -1 otherwise
+    vertex   int32: the vertex the query is on (on_vertex); -1 otherwise
+    """
+
+    kind: np.ndarray
+    simplex: np.ndarray
+    edge: np.ndarray
+    vertex: np.ndarray
+
+    def kind_names(self):
+        """The kinds as strings ("inside", "on_edge", "on_vertex", "outside")."""
+        return np.asarray(_core.location_kinds)[self.kind]
+
+
 class Delaunay:
     """The Delaunay triangulation of 2D points, exact with an exact kernel.
 
@@ -166,7 +188,10 @@ class Delaunay:
                   the triangles as facets of the lifted points, with qhull's scaling
       nsimplex, npoints, ndim
       add_points(points, restart=False), close()
+      find_simplex(xi, bruteforce=False, tol=None)  exact: a triangle holding each query
     exidel's own:
+      locate(xi, order="hilbert", threads=None)  exact classification: inside, on an edge
+                  (which), on a vertex (which), outside (with the hull edge that sees it)
       hull        (h,) int32, the boundary cycle counter-clockwise from the
                   lexicographically smallest point, collinear boundary points included
       halfedges   (3m,) int32, twin of half-edge e (from simplices.flat[e] to the next
@@ -227,6 +252,64 @@ class Delaunay:
         self._equations = None
         self._paraboloid = None
         self._vertex_to_simplex = None
+        self._locator = None
+
+    def _located(self, xi, order, threads):
+        """xi as (n, 2) rows, the shape of the answer, and the C++ Locator's four arrays."""
+        xi = np.asarray(xi, dtype=np.float64)
+        if xi.ndim == 0 or xi.shape[-1] != self.ndim:
+            raise ValueError(f"xi: expected shape (..., 2), got {xi.shape}")
+        shape = xi.shape[:-1]
+        rows = np.ascontiguousarray(xi.reshape(-1, self.ndim))
+        if self._locator is None:
+            self._locator = _core.Locator(self.points, self.simplices, self.halfedges,
+                                          self.hull, self.collinear, self.kernel)
+        threads = default_threads() if threads is None else threads
+        try:
+            kind, simplex, edge, vertex = self._locator.locate(rows, order, threads)
+        except RuntimeError as e:  # "location_exceeded: ..." from an inexact kernel
+            kind_name, _, message = str(e).partition(": ")
+            raise TriangulationError(kind_name, None, None, message) from None
+        return shape, kind, simplex, edge, vertex
+
+    def locate(self, xi, order="hilbert", threads=None):
+        """Where each query lies, decided exactly (the kernel's orient2d, no tolerance).
+
+        xi       array of shape (..., 2)
+        order    "hilbert" (default: the queries sorted along a Hilbert curve, each walk
+                 from the previous answer), "given" (their own order), "jump" (each from
+                 the nearest of a sample of vertices); the answers' kinds and vertices do
+                 not depend on it
+        threads  worker threads (None: the hardware's); the answers do not depend on it
+        Returns a Location with arrays of shape (...):
+          kind     int8: 0 inside a triangle, 1 on an edge, 2 on a vertex, 3 outside the
+                   convex hull (exidel.location_kinds names them)
+          simplex  int32: a triangle holding the query (inside, on_edge, on_vertex), or,
+                   outside, the triangle of a hull edge that sees it; -1 when there are no
+                   triangles (collinear points)
+          edge     int32: on an edge, the half-edge (an index into .halfedges: it runs from
+                   simplices.flat[edge] to the next corner of its triangle); outside, a
+                   hull half-edge with the query strictly on its outer side; -1 otherwise.
+                   Collinear points: on_edge's edge is the position i of the segment
+                   hull[i], hull[i + 1]
+          vertex   int32: on a vertex, its index (a repeated point's first occurrence);
+                   -1 otherwise
+        A NaN or infinite query raises ValueError naming the row. With an inexact kernel
+        a walk whose answers contradict each other raises TriangulationError."""
+        shape, kind, simplex, edge, vertex = self._located(xi, order, threads)
+        return Location(kind.reshape(shape), simplex.reshape(shape), edge.reshape(shape),
+                        vertex.reshape(shape))
+
+    def find_simplex(self, xi, bruteforce=False, tol=None):
+        """scipy's find_simplex: the index of a triangle holding each query, -1 outside the
+        convex hull. Decided exactly, so `bruteforce` and `tol` are accepted for scipy's
+        sake and change nothing: a query on an edge or a vertex is always found (in one of
+        the triangles holding it), however thin the triangles, where scipy's eps test may
+        answer -1. A NaN or infinite query raises ValueError (scipy answers -1)."""
+        del bruteforce, tol
+        shape, kind, simplex, _, _ = self._located(xi, "hilbert", None)
+        out = np.where(kind == 3, -1, simplex).astype(np.intc)
+        return out.reshape(shape)
 
     def add_points(self, points, restart=False):
         """Adds points (an (k, 2) array) to a triangulation made with incremental=True, with

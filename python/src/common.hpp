@@ -93,5 +93,6 @@ py::array_t<double> to_numpy(std::vector<Point2>&& points);
 void bind_predicates(py::module_& m);
 void bind_delaunay(py::module_& m);
 void bind_voronoi(py::module_& m);
+void bind_locate(py::module_& m);
 
 }  // namespace exidel::python

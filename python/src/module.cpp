@@ -136,4 +136,5 @@ PYBIND11_MODULE(_core, m) {
     bind_predicates(m);
     bind_delaunay(m);
     bind_voronoi(m);
+    bind_locate(m);
 }

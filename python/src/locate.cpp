@@ -1,0 +1,128 @@
+// exidel._core.Locator: exact point location (delaunay::Locator) over the arrays of an
+// exidel.Delaunay, kept between calls (its walk-ordered copy of the mesh is built once).
+// exidel.Delaunay.locate and find_simplex (exidel/_delaunay.py) use it.
+#include <pybind11/stl.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "common.hpp"
+#include "exidel/delaunay/locate.hpp"
+
+namespace exidel::python {
+
+namespace {
+
+using delaunay::Location;
+using delaunay::LocationKind;
+
+template <class... K>
+using LocatorVariant = std::variant<std::unique_ptr<delaunay::Locator<K>>...>;
+using AnyLocator = exidel::detail::KernelTypes::apply<LocatorVariant>;
+
+using IndexArray = py::array_t<std::int32_t, py::array::c_style | py::array::forcecast>;
+
+class PyLocator {
+public:
+    PyLocator(py::object points_object, IndexArray triangles, IndexArray halfedges, IndexArray hull,
+              bool collinear, const std::string& kernel_name)
+        : points_(to_points(points_object, "points")) {
+        if (points_.single) throw py::value_error("points: expected shape (n, 2), got (2,)");
+        if (triangles.ndim() != 2 || triangles.shape(1) != 3) {
+            throw py::value_error("triangles: expected shape (m, 3)");
+        }
+        const auto copy = [](const IndexArray& a, auto& out, const char* what) {
+            const std::int32_t* p = a.data();
+            out.resize(static_cast<std::size_t>(a.size()));
+            for (std::size_t i = 0; i < out.size(); ++i) {
+                using T = typename std::decay_t<decltype(out)>::value_type;
+                if constexpr (std::is_unsigned_v<T>) {
+                    if (p[i] < 0) throw py::value_error(std::string(what) + ": negative index");
+                }
+                out[i] = static_cast<typename std::decay_t<decltype(out)>::value_type>(p[i]);
+            }
+        };
+        copy(triangles, tri_.triangles, "triangles");
+        copy(halfedges, tri_.halfedges, "halfedges");
+        copy(hull, tri_.hull, "hull");
+        tri_.collinear = collinear;
+        const AnyKernel kernel = to_kernel(kernel_name);
+        try {
+            std::visit(
+                [&](const auto& k) {
+                    using K = std::decay_t<decltype(k)>;
+                    locator_ = std::make_unique<delaunay::Locator<K>>(points_.span(), tri_, k);
+                },
+                kernel);
+        } catch (const std::invalid_argument& e) {
+            throw py::value_error(e.what());
+        }
+    }
+
+    /// (kind int8, triangle int32, edge int32, vertex int32) arrays, or raises.
+    py::tuple locate(py::object queries_object, const std::string& order_name, unsigned threads) {
+        const Points queries = to_points(queries_object, "xi");
+        delaunay::LocateOptions options;
+        if (order_name == "hilbert") {
+            options.order = delaunay::LocateOrder::hilbert;
+        } else if (order_name == "given") {
+            options.order = delaunay::LocateOrder::given;
+        } else if (order_name == "jump") {
+            options.order = delaunay::LocateOrder::jump;
+        } else {
+            throw py::value_error("unknown order '" + order_name + "'; expected hilbert|given|jump");
+        }
+        if (threads == 0) throw py::value_error("threads must be at least 1");
+        options.threads = threads;
+        const std::size_t n = queries.rows;
+        std::vector<Location> where(n);
+        std::optional<delaunay::Failure> failure;
+        {
+            py::gil_scoped_release release;
+            failure = std::visit(
+                [&](const auto& l) { return l->locate(queries.span(), where, options); }, locator_);
+        }
+        if (failure) {
+            throw std::runtime_error(std::string(delaunay::to_string(failure->kind)) + ": " +
+                                     failure->message);
+        }
+        std::vector<std::int8_t> kind(n);
+        std::vector<std::int32_t> triangle(n), edge(n), vertex(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            kind[i] = static_cast<std::int8_t>(where[i].kind);
+            triangle[i] = where[i].triangle;
+            edge[i] = where[i].edge;
+            vertex[i] = where[i].vertex == delaunay::no_vertex
+                            ? -1
+                            : static_cast<std::int32_t>(where[i].vertex);
+        }
+        return py::make_tuple(to_numpy(std::move(kind)), to_numpy(std::move(triangle)),
+                              to_numpy(std::move(edge)), to_numpy(std::move(vertex)));
+    }
+
+private:
+    Points points_;
+    delaunay::Triangulation tri_;
+    AnyLocator locator_;
+};
+
+}  // namespace
+
+void bind_locate(py::module_& m) {
+    py::class_<PyLocator>(m, "Locator",
+                          "Exact point location over the arrays of a triangulation "
+                          "(delaunay::Locator); exidel.Delaunay.locate uses it.")
+        .def(py::init<py::object, IndexArray, IndexArray, IndexArray, bool, const std::string&>(),
+             py::arg("points"), py::arg("triangles"), py::arg("halfedges"), py::arg("hull"),
+             py::arg("collinear"), py::arg("kernel") = "adaptive")
+        .def("locate", &PyLocator::locate, py::arg("xi"), py::arg("order") = "hilbert",
+             py::arg("threads") = 1);
+    m.attr("location_kinds") = py::make_tuple("inside", "on_edge", "on_vertex", "outside");
+}
+
+}  // namespace exidel::python
