@@ -28,6 +28,9 @@ int triangulate_command(std::span<const std::string_view> args);
 /// `exidel voronoi`: Voronoi diagram of points read from a file or stdin.
 int voronoi_command(std::span<const std::string_view> args);
 
+/// `exidel locate`: where query points lie in the triangulation of points, exactly.
+int locate_command(std::span<const std::string_view> args);
+
 /// `exidel certify`: the exact certifier on a point file and a triangulation file.
 int certify_command(std::span<const std::string_view> args);
 

@@ -75,7 +75,8 @@ public:
         } else if (order_name == "jump") {
             options.order = delaunay::LocateOrder::jump;
         } else {
-            throw py::value_error("unknown order '" + order_name + "'; expected hilbert|given|jump");
+            throw py::value_error("unknown order '" + order_name +
+                                  "'; expected hilbert|given|jump");
         }
         if (threads == 0) throw py::value_error("threads must be at least 1");
         options.threads = threads;

@@ -1,0 +1,139 @@
+// End-to-end tests of `exidel locate`: the csv and json tables against the library's
+// Locator on a lattice whose half-step queries are all on edges, vertices or outside,
+// duplicates, collinear points, usage errors and malformed queries (no output written),
+// --stats.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "exidel/delaunay/locate.hpp"
+#include "exidel/delaunay/triangulate.hpp"
+#include "exidel/predicates/adaptive.hpp"
+#include "run_binary.hpp"
+
+namespace {
+
+using exidel::AdaptiveKernel;
+using exidel::Point2;
+namespace delaunay = exidel::delaunay;
+using namespace exidel::cli_test;
+
+RunResult run(const std::string& args, const std::string& input = "") {
+    return run_exidel("loc", "locate " + args, input);
+}
+
+std::string xy_text(const std::vector<Point2>& points) {
+    std::ostringstream s;
+    for (const Point2& p : points) s << std::hexfloat << p.x << ' ' << p.y << '\n';
+    return s.str();
+}
+
+std::vector<std::string> split(const std::string& text, char sep) {
+    std::vector<std::string> parts;
+    std::string part;
+    std::istringstream s(text);
+    while (std::getline(s, part, sep)) parts.push_back(part);
+    return parts;
+}
+
+TEST(LocateCommand, CsvMatchesTheLibraryOnALattice) {
+    std::vector<Point2> points, queries;
+    for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 6; ++j) points.push_back({double(i), double(j)});
+    for (int i = -1; i < 12; ++i)
+        for (int j = -1; j < 12; ++j) queries.push_back({i * 0.5, j * 0.5});
+    const std::string pts = write_file("loc_lattice.xy", xy_text(points));
+    const std::string qs = write_file("loc_lattice_q.xy", xy_text(queries));
+    const RunResult r = run("-q " + pts + " -Q " + qs);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto lines = split(r.out, '\n');
+    ASSERT_EQ(lines.size(), queries.size() + 1);
+    EXPECT_EQ(lines[0], "query,kind,triangle,v0,v1,v2,edge_from,edge_to,vertex");
+
+    const auto tri = delaunay::triangulate(points, AdaptiveKernel{}).triangulation;
+    const delaunay::Locator<AdaptiveKernel> locator(points, tri);
+    std::vector<delaunay::Location> where(queries.size());
+    ASSERT_FALSE(locator.locate(queries, where, {.threads = 2}).has_value());
+    std::size_t on_edge = 0, on_vertex = 0, outside = 0;
+    for (std::size_t i = 0; i < queries.size(); ++i) {
+        const auto f = split(lines[i + 1], ',');
+        ASSERT_GE(f.size(), 8u) << lines[i + 1];
+        EXPECT_EQ(f[0], std::to_string(i));
+        EXPECT_EQ(f[1], delaunay::to_string(where[i].kind)) << lines[i + 1];
+        EXPECT_EQ(f[2], std::to_string(where[i].triangle));
+        on_edge += f[1] == "on_edge";
+        on_vertex += f[1] == "on_vertex";
+        outside += f[1] == "outside";
+        if (f[1] == "on_vertex") {
+            ASSERT_EQ(f.size(), 9u);
+            const Point2 v = points[std::stoul(f[8])];
+            EXPECT_TRUE(v.x == queries[i].x && v.y == queries[i].y);
+        }
+        if (f[1] == "on_edge") {
+            const Point2 a = points[std::stoul(f[6])], b = points[std::stoul(f[7])];
+            EXPECT_EQ(AdaptiveKernel::orient2d(a, b, queries[i]), exidel::Sign::zero);
+        }
+    }
+    EXPECT_EQ(on_vertex, 36u);
+    EXPECT_EQ(on_edge, 2u * 5 * 6 + 5 * 5);  // axis edges' midpoints, cells' centres
+    EXPECT_EQ(outside, 13u * 13 - 11 * 11);
+}
+
+TEST(LocateCommand, JsonDuplicatesAndStats) {
+    const std::string pts = write_file("loc_dup.xy", "0 0\n1 0\n0 1\n1 1\n1 1\n");
+    const std::string qs = write_file("loc_dup_q.json", "[[1, 1], [0.5, 0.5], [3, 3], [0.25, 0.25]]");
+    const std::string out = work_path("loc_dup_out.json");
+    std::remove(out.c_str());
+    const RunResult r = run(pts + " -Q " + qs + " -o " + out + " --stats -q");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto j = nlohmann::json::parse(slurp(out));
+    EXPECT_EQ(j["kind"], (nlohmann::json{"on_vertex", "on_edge", "outside", "inside"}));
+    EXPECT_EQ(j["vertex"][0], 3);  // the first of the two copies of (1, 1)
+    EXPECT_TRUE(j["vertex"][1].is_null());
+    EXPECT_TRUE(j["edge"][1].is_array());
+    EXPECT_TRUE(j["edge"][2].is_array());  // the hull edge that sees (3, 3)
+    const auto stats = nlohmann::json::parse(r.err);
+    EXPECT_EQ(stats["queries"], 4);
+    EXPECT_EQ(stats["on_vertex"], 1);
+    EXPECT_EQ(stats["outside"], 1);
+    EXPECT_TRUE(stats["failure"].is_null());
+}
+
+TEST(LocateCommand, CollinearPoints) {
+    const std::string pts = write_file("loc_line.xy", "0 0\n1 1\n2 2\n");
+    const RunResult r = run(pts + " -Q - -f json", "0.5 0.5\n1 1\n3 3\n0 1\n");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["kind"], (nlohmann::json{"on_edge", "on_vertex", "outside", "outside"}));
+    EXPECT_EQ(j["edge"][0], (nlohmann::json{0, 1}));
+    EXPECT_TRUE(j["triangle"][0].is_null());
+}
+
+TEST(LocateCommand, ErrorsWriteNothing) {
+    const std::string pts = write_file("loc_err.xy", "0 0\n1 0\n0 1\n");
+    const std::string out = work_path("loc_err_out.csv");
+    std::remove(out.c_str());
+    RunResult r = run(pts);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("--queries"), std::string::npos);
+    r = run("-Q - -", "0 0\n");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("standard input"), std::string::npos);
+    const std::string bad = write_file("loc_err_q.xy", "0.1 0.1\n0.2 nan\n");
+    r = run(pts + " -Q " + bad + " -o " + out);
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.err.find("queries: line 2"), std::string::npos) << r.err;
+    EXPECT_FALSE(exists(out));
+    r = run(pts + " -Q " + work_path("loc_missing.xy") + " -o " + out);
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.err.find("exidel: queries:"), std::string::npos) << r.err;
+    EXPECT_FALSE(exists(out));
+    r = run(pts + " -Q " + bad + " -o " + work_path("loc.txt"));
+    EXPECT_EQ(r.status, 2);
+    EXPECT_TRUE(files_containing("loc_err_out.csv.tmp").empty());
+}
+
+}  // namespace
