@@ -162,35 +162,40 @@ void write_json(std::ostream& out, const delaunay::Triangulation& t,
         out << (last ? "]\n" : "],\n");
     };
     out << "{";
-    list("kind", [&](const delaunay::Location& w) { out << '"' << delaunay::to_string(w.kind) << '"'; },
-         false);
-    list("triangle",
-         [&](const delaunay::Location& w) {
-             if (w.triangle >= 0) {
-                 out << w.triangle;
-             } else {
-                 out << "null";
-             }
-         },
-         false);
-    list("edge",
-         [&](const delaunay::Location& w) {
-             if (const auto e = edge_ends(t, w)) {
-                 out << '[' << e->first << ", " << e->second << ']';
-             } else {
-                 out << "null";
-             }
-         },
-         false);
-    list("vertex",
-         [&](const delaunay::Location& w) {
-             if (w.vertex != delaunay::no_vertex) {
-                 out << w.vertex;
-             } else {
-                 out << "null";
-             }
-         },
-         true);
+    list(
+        "kind",
+        [&](const delaunay::Location& w) { out << '"' << delaunay::to_string(w.kind) << '"'; },
+        false);
+    list(
+        "triangle",
+        [&](const delaunay::Location& w) {
+            if (w.triangle >= 0) {
+                out << w.triangle;
+            } else {
+                out << "null";
+            }
+        },
+        false);
+    list(
+        "edge",
+        [&](const delaunay::Location& w) {
+            if (const auto e = edge_ends(t, w)) {
+                out << '[' << e->first << ", " << e->second << ']';
+            } else {
+                out << "null";
+            }
+        },
+        false);
+    list(
+        "vertex",
+        [&](const delaunay::Location& w) {
+            if (w.vertex != delaunay::no_vertex) {
+                out << w.vertex;
+            } else {
+                out << "null";
+            }
+        },
+        true);
     out << "}\n";
 }
 

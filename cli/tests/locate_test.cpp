@@ -84,7 +84,8 @@ TEST(LocateCommand, CsvMatchesTheLibraryOnALattice) {
 
 TEST(LocateCommand, JsonDuplicatesAndStats) {
     const std::string pts = write_file("loc_dup.xy", "0 0\n1 0\n0 1\n1 1\n1 1\n");
-    const std::string qs = write_file("loc_dup_q.json", "[[1, 1], [0.5, 0.5], [3, 3], [0.25, 0.25]]");
+    const std::string qs =
+        write_file("loc_dup_q.json", "[[1, 1], [0.5, 0.5], [3, 3], [0.25, 0.25]]");
     const std::string out = work_path("loc_dup_out.json");
     std::remove(out.c_str());
     const RunResult r = run(pts + " -Q " + qs + " -o " + out + " --stats -q");
