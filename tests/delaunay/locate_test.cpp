@@ -259,6 +259,29 @@ RC_GTEST_PROP(Locate, ExactKernelsAndOrdersAgree, ()) {
     }
 }
 
+RC_GTEST_PROP(Locate, NearestVertexIsExactlyNearest, ()) {
+    const PointSet s = *gen_point_set(60);
+    const Triangulation t = exidel_triangulation(s.points);
+    const auto queries = degenerate_queries(s.points, t, *rc::gen::arbitrary<std::uint32_t>());
+    std::vector<std::uint32_t> nearest(queries.size());
+    Locator<AdaptiveKernel> locator(s.points, t);
+    RC_ASSERT(!locator.nearest(queries, nearest).has_value());
+    const auto first = first_occurrence(s.points);
+    for (std::size_t i = 0; i < queries.size(); ++i) {
+        if (s.points.empty()) {
+            RC_ASSERT(nearest[i] == delaunay::no_vertex);
+            continue;
+        }
+        RC_ASSERT(nearest[i] < s.points.size());
+        RC_ASSERT(first[nearest[i]] == nearest[i]);
+        const auto q = to_cgal(queries[i]), w = to_cgal(s.points[nearest[i]]);
+        for (const Point2& p : s.points) {
+            // No point strictly nearer (CGAL's exact comparison).
+            RC_ASSERT(CGAL::compare_distance_to_point(q, to_cgal(p), w) != CGAL::SMALLER);
+        }
+    }
+}
+
 TEST(Locate, BatchAnswersDoNotDependOnThreads) {
     const auto points = uniform_points(20000, 3);
     const auto t = delaunay::triangulate(points, AdaptiveKernel{}).triangulation;
@@ -321,6 +344,10 @@ TEST(Locate, NonFiniteQueriesAndBadArgumentsAreClearErrors) {
                  std::out_of_range);
     std::vector<Location> small(2);
     EXPECT_THROW((void)locator.locate(queries, small), std::invalid_argument);
+    std::vector<std::uint32_t> nearest(3);
+    const auto nf = locator.nearest(queries, nearest);
+    ASSERT_TRUE(nf.has_value());
+    EXPECT_EQ(nf->kind, delaunay::FailureKind::non_finite_input);
 
     Triangulation broken = t;
     broken.triangles[4] = 1000;

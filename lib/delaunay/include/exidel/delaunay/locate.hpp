@@ -206,6 +206,20 @@ public:
     std::optional<Failure> locate(std::span<const Point2> queries, std::span<Location> out,
                                   const LocateOptions& options = {}) const;
 
+    /// The nearest vertex to every query (out[i], an input index: a first occurrence;
+    /// no_vertex when there are no points), decided exactly by the kernel's
+    /// compare_distance: each query is located, then a greedy walk goes from the nearest
+    /// corner of its triangle to a strictly nearer neighbour while there is one. In a
+    /// Delaunay triangulation a vertex with no strictly nearer neighbour is a nearest
+    /// vertex: if v is not, the segment from v to q leaves v's Voronoi cell through the
+    /// cell of a neighbour w at a point x with |xw| = |xv|, and |qw| <= |qx| + |xw| = |qv|,
+    /// with equality only if w lies on the line of v and x, beyond x from q, at |xv| from
+    /// x, which is v. Among several equally near vertices, which one is reported depends
+    /// on the walk. Failures as for locate (and location_exceeded for a greedy walk that
+    /// does not end, only possible with an inexact kernel).
+    std::optional<Failure> nearest(std::span<const Point2> queries, std::span<std::uint32_t> out,
+                                   const LocateOptions& options = {}) const;
+
     /// The batch form with the walks' orient2d taken from `walker`, a kernel with the same
     /// answers as K (the library runs the adaptive kernel's batches with its filters
     /// inline, src/locate.cpp).
@@ -244,6 +258,9 @@ private:
     detail::FreshVector<std::uint32_t> input_of_local_;     // local vertex -> input index
     detail::FreshVector<std::uint32_t> triangle_of_local_;  // local triangle -> triangle
     detail::FreshVector<std::uint32_t> local_of_triangle_;  // triangle -> local triangle
+    // Local vertex -> a local half-edge out of it, the one on the hull for a hull vertex
+    // (turning counter-clockwise from it then meets every triangle around the vertex).
+    detail::FreshVector<std::int32_t> vertex_edge_;
     std::vector<Sample> sample_;
     std::uint64_t bound_ = 0;
     std::int32_t last_ = -1;
@@ -340,6 +357,11 @@ Locator<K>::Locator(std::span<const Point2> points, const Triangulation& triangu
                 twin < 0 ? -1
                          : static_cast<std::int32_t>(3 * local_of_triangle_[twin / 3] + twin % 3);
         }
+    }
+    vertex_edge_.assign(local_points_.size(), -1);
+    for (std::size_t e = 0; e < local_triangles_.size(); ++e) {
+        std::int32_t& out = vertex_edge_[local_triangles_[e]];
+        if (out < 0 || local_halfedges_[e] < 0) out = static_cast<std::int32_t>(e);
     }
     // About m^(1/3) vertices, each with a triangle of its, at random half-edges.
     const auto size = std::max<std::size_t>(1, static_cast<std::size_t>(std::cbrt(double(m))));
@@ -500,6 +522,105 @@ std::optional<Failure> Locator<K>::locate_with(const W& walker, std::span<const 
         return std::move(e.failure);
     }
     for (std::size_t i = 0; i < sorted.size(); ++i) out[sorted[i].index] = answers[i];
+    return std::nullopt;
+}
+
+template <PredicateKernel K>
+std::optional<Failure> Locator<K>::nearest(std::span<const Point2> queries,
+                                           std::span<std::uint32_t> out,
+                                           const LocateOptions& options) const {
+    if (out.size() != queries.size()) {
+        throw std::invalid_argument("Locator::nearest: " + std::to_string(queries.size()) +
+                                    " queries but room for " + std::to_string(out.size()));
+    }
+    std::vector<Location> where(queries.size());
+    if (auto failure = locate(queries, where, options)) return failure;
+    const std::size_t n = queries.size();
+    constexpr std::size_t chunk = 4096;
+    const std::size_t chunks = (n + chunk - 1) / chunk;
+    const auto exceeded = [](std::size_t i) {
+        return FailureError(Failure{
+            FailureKind::location_exceeded, i, no_index,
+            "the greedy walk to the vertex nearest query " + std::to_string(i) + " did not end"});
+    };
+    const auto& chain = tri_.hull;
+    try {
+        parallel_for(chunks, options.threads, [&](std::size_t c) {
+            for (std::size_t i = c * chunk; i < std::min(n, (c + 1) * chunk); ++i) {
+                const Point2 q = queries[i];
+                if (where[i].kind == LocationKind::on_vertex) {
+                    out[i] = where[i].vertex;
+                    continue;
+                }
+                if (tri_.collinear) {
+                    // Distances along a line are unimodal: step toward the nearer side.
+                    if (chain.empty()) {
+                        out[i] = no_vertex;
+                        continue;
+                    }
+                    const auto less = [this](std::uint32_t v, Point2 p) {
+                        const Point2 a = points_[v];
+                        return a.x < p.x || (a.x == p.x && a.y < p.y);
+                    };
+                    std::size_t at = static_cast<std::size_t>(
+                        std::lower_bound(chain.begin(), chain.end(), q, less) - chain.begin());
+                    at = std::min(at, chain.size() - 1);
+                    const auto nearer = [&](std::size_t a, std::size_t b) {
+                        return kernel_.compare_distance(q, points_[chain[a]], points_[chain[b]]) ==
+                               Sign::negative;
+                    };
+                    for (std::size_t steps = 0;; ++steps) {
+                        if (steps > chain.size()) throw exceeded(i);
+                        if (at > 0 && nearer(at - 1, at)) {
+                            --at;
+                        } else if (at + 1 < chain.size() && nearer(at + 1, at)) {
+                            ++at;
+                        } else {
+                            break;
+                        }
+                    }
+                    out[i] = chain[at];
+                    continue;
+                }
+                const std::size_t base =
+                    3 *
+                    std::size_t{local_of_triangle_[static_cast<std::uint32_t>(where[i].triangle)]};
+                const auto nearer = [&](std::uint32_t a, std::uint32_t b) {
+                    return kernel_.compare_distance(q, local_points_[a], local_points_[b]) ==
+                           Sign::negative;
+                };
+                std::uint32_t v = local_triangles_[base];
+                for (std::size_t j = 1; j < 3; ++j) {
+                    if (nearer(local_triangles_[base + j], v)) v = local_triangles_[base + j];
+                }
+                for (std::size_t steps = 0;; ++steps) {
+                    if (steps > local_points_.size()) throw exceeded(i);
+                    bool moved = false;
+                    const auto first = static_cast<std::size_t>(vertex_edge_[v]);
+                    std::size_t e = first;
+                    do {  // every triangle around v, counter-clockwise
+                        const std::uint32_t a = local_triangles_[next_halfedge(e)];
+                        const std::uint32_t b = local_triangles_[prev_halfedge(e)];
+                        if (nearer(a, v)) {
+                            v = a, moved = true;
+                            break;
+                        }
+                        if (nearer(b, v)) {
+                            v = b, moved = true;
+                            break;
+                        }
+                        const std::int32_t twin = local_halfedges_[prev_halfedge(e)];
+                        if (twin < 0) break;
+                        e = static_cast<std::size_t>(twin);
+                    } while (e != first);
+                    if (!moved) break;
+                }
+                out[i] = input_of_local_[v];
+            }
+        });
+    } catch (FailureError& e) {
+        return std::move(e.failure);
+    }
     return std::nullopt;
 }
 
