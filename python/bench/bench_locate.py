@@ -2,7 +2,7 @@
 find_simplex on the same points and queries, in one process.
 
     PYTHONPATH=build/python /usr/bin/python3 python/bench/bench_locate.py \
-        [--n 1000000] [--queries 1000000] [--reps 3]
+        [--n 1000000] [--queries 1000000] [--reps 3] [--interpolate]
 
 Points and queries uniform in the unit square (queries also 5% beyond it). exidel's first
 call builds its Locator (the mesh laid out for walks) and is reported apart from the
@@ -20,6 +20,7 @@ import time
 
 import numpy as np
 import scipy
+import scipy.interpolate
 import scipy.spatial
 
 import exidel
@@ -37,6 +38,10 @@ def main():
     parser.add_argument("--queries", type=int, default=1_000_000)
     parser.add_argument("--reps", type=int, default=3)
     parser.add_argument("--seed", type=int, default=20261205)
+    parser.add_argument("--interpolate", action="store_true",
+                        help="also LinearNDInterpolator against scipy's, triangulation included "
+                             "on both sides, once (scipy's walks make it slow on queries in "
+                             "random order)")
     args = parser.parse_args()
     rng = np.random.default_rng(args.seed)
     pts = rng.random((args.n, 2))
@@ -63,6 +68,14 @@ def main():
                 np.sort(theirs.simplices[other[both]], axis=1)).all(axis=1).sum()
         agree = same + ((a == -1) & (other == -1)).sum()
         print(f"answers agreeing with scipy ({name}): {agree} of {len(q)}")
+    if args.interpolate:
+        values = np.sin(6 * pts[:, 0]) + pts[:, 1] ** 2
+        t_ours, v_ours = timed(lambda: exidel.LinearNDInterpolator(pts, values)(q))
+        t_theirs, v_theirs = timed(lambda: scipy.interpolate.LinearNDInterpolator(pts, values)(q))
+        close = np.isclose(v_ours, v_theirs, rtol=1e-12, atol=1e-12, equal_nan=True).sum()
+        print(f"LinearNDInterpolator(points, values)(queries): exidel {t_ours:.3f} s, scipy "
+              f"{t_theirs:.3f} s, ratio {t_ours / t_theirs:.4f}x (goal <= 0.2x); "
+              f"{close} of {len(q)} values equal to 1e-12")
     e, s = statistics.median(ex), statistics.median(sc)
     print(f"n = {args.n} points, {args.queries} queries, scipy {scipy.__version__}, "
           f"exidel {exidel.__version__}; medians of {args.reps} (s)")

@@ -192,6 +192,7 @@ class Delaunay:
     exidel's own:
       locate(xi, order="hilbert", threads=None)  exact classification: inside, on an edge
                   (which), on a vertex (which), outside (with the hull edge that sees it)
+      nearest(xi, threads=None)  the exactly nearest point to each query
       hull        (h,) int32, the boundary cycle counter-clockwise from the
                   lexicographically smallest point, collinear boundary points included
       halfedges   (3m,) int32, twin of half-edge e (from simplices.flat[e] to the next
@@ -254,8 +255,8 @@ class Delaunay:
         self._vertex_to_simplex = None
         self._locator = None
 
-    def _located(self, xi, order, threads):
-        """xi as (n, 2) rows, the shape of the answer, and the C++ Locator's four arrays."""
+    def _query(self, xi, call):
+        """xi as (n, 2) rows given to call(locator, rows), and the shape of the answer."""
         xi = np.asarray(xi, dtype=np.float64)
         if xi.ndim == 0 or xi.shape[-1] != self.ndim:
             raise ValueError(f"xi: expected shape (..., 2), got {xi.shape}")
@@ -264,13 +265,26 @@ class Delaunay:
         if self._locator is None:
             self._locator = _core.Locator(self.points, self.simplices, self.halfedges,
                                           self.hull, self.collinear, self.kernel)
-        threads = default_threads() if threads is None else threads
         try:
-            kind, simplex, edge, vertex = self._locator.locate(rows, order, threads)
+            return shape, call(self._locator, rows)
         except RuntimeError as e:  # "location_exceeded: ..." from an inexact kernel
             kind_name, _, message = str(e).partition(": ")
             raise TriangulationError(kind_name, None, None, message) from None
-        return shape, kind, simplex, edge, vertex
+
+    def _located(self, xi, order, threads):
+        """The shape of the answer and the C++ Locator's four arrays."""
+        threads = default_threads() if threads is None else threads
+        shape, arrays = self._query(xi, lambda loc, rows: loc.locate(rows, order, threads))
+        return (shape, *arrays)
+
+    def nearest(self, xi, threads=None):
+        """The index of the point nearest to each query (int32, the queries' shape), decided
+        exactly (the kernel's compare_distance): no point is strictly nearer. Among equally
+        near points one is chosen (a repeated point by its first occurrence); -1 when there
+        are no points. A NaN or infinite query raises ValueError naming the row."""
+        threads = default_threads() if threads is None else threads
+        shape, out = self._query(xi, lambda loc, rows: loc.nearest(rows, threads))
+        return out.reshape(shape)
 
     def locate(self, xi, order="hilbert", threads=None):
         """Where each query lies, decided exactly (the kernel's orient2d, no tolerance).

@@ -106,6 +106,31 @@ public:
                               to_numpy(std::move(edge)), to_numpy(std::move(vertex)));
     }
 
+    /// The nearest vertex (int32) to every query, or raises.
+    py::array_t<std::int32_t> nearest(py::object queries_object, unsigned threads) {
+        const Points queries = to_points(queries_object, "xi");
+        if (threads == 0) throw py::value_error("threads must be at least 1");
+        std::vector<std::uint32_t> out(queries.rows);
+        std::optional<delaunay::Failure> failure;
+        {
+            py::gil_scoped_release release;
+            failure = std::visit(
+                [&](const auto& l) {
+                    return l->nearest(queries.span(), out, {.threads = threads});
+                },
+                locator_);
+        }
+        if (failure) {
+            throw std::runtime_error(std::string(delaunay::to_string(failure->kind)) + ": " +
+                                     failure->message);
+        }
+        std::vector<std::int32_t> result(out.size());
+        for (std::size_t i = 0; i < out.size(); ++i) {
+            result[i] = out[i] == delaunay::no_vertex ? -1 : static_cast<std::int32_t>(out[i]);
+        }
+        return to_numpy(std::move(result));
+    }
+
 private:
     Points points_;
     delaunay::Triangulation tri_;
@@ -122,7 +147,8 @@ void bind_locate(py::module_& m) {
              py::arg("points"), py::arg("triangles"), py::arg("halfedges"), py::arg("hull"),
              py::arg("collinear"), py::arg("kernel") = "adaptive")
         .def("locate", &PyLocator::locate, py::arg("xi"), py::arg("order") = "hilbert",
-             py::arg("threads") = 1);
+             py::arg("threads") = 1)
+        .def("nearest", &PyLocator::nearest, py::arg("xi"), py::arg("threads") = 1);
     m.attr("location_kinds") = py::make_tuple("inside", "on_edge", "on_vertex", "outside");
 }
 
