@@ -31,6 +31,9 @@ int voronoi_command(std::span<const std::string_view> args);
 /// `exidel locate`: where query points lie in the triangulation of points, exactly.
 int locate_command(std::span<const std::string_view> args);
 
+/// `exidel interpolate`: values at points interpolated at query points (linear, nearest).
+int interpolate_command(std::span<const std::string_view> args);
+
 /// `exidel certify`: the exact certifier on a point file and a triangulation file.
 int certify_command(std::span<const std::string_view> args);
 

@@ -1,10 +1,15 @@
-// exidel CLI: `exidel locate`, points and queries in, where each query lies out.
+// exidel CLI: `exidel locate`, points and queries in, where each query lies out; and
+// `exidel interpolate`, points with values and queries in, a value per query out.
 //
 // As `exidel triangulate` (triangulate.cpp), one way: create the output's temporary file
 // -> read the points and the queries -> triangulate -> locate every query exactly
-// (lib/delaunay, locate.hpp) -> write a CSV or JSON table into the temporary file,
+// (lib/delaunay, locate.hpp) -> interpolate (interpolate.hpp), for exidel interpolate ->
+// write a CSV or JSON table into the temporary file,
 // renamed into place on success (or stdout). No failure leaves an output file behind.
+#include <charconv>
+#include <cmath>
 #include <iostream>
+#include <limits>
 #include <optional>
 #include <string>
 #include <variant>
@@ -14,8 +19,10 @@
 
 #include "commands.hpp"
 #include "common.hpp"
+#include "exidel/delaunay/interpolate.hpp"
 #include "exidel/delaunay/locate.hpp"
 #include "exidel/delaunay/triangulate.hpp"
+#include "exidel/io/number.hpp"
 #include "exidel/io/points.hpp"
 #include "options.hpp"
 #include "output.hpp"
@@ -113,11 +120,49 @@ std::optional<TableFormat> table_format_from_path(std::string_view path) {
                                          : table_format_from_name(path.substr(dot + 1));
 }
 
+enum class Method { linear, nearest };
+
 struct Options : PointCommand {
     std::optional<std::string> queries;
     std::optional<io::PointFormat> queries_format;
     std::optional<TableFormat> format;
+    bool interpolate = false;  // exidel interpolate: values, not locations
+    Method method = Method::linear;
+    double fill = std::numeric_limits<double>::quiet_NaN();
 };
+
+/// A value as the shortest decimal that reads back as the same double; NaN as `nan`.
+void put_value(std::ostream& out, double v, std::string_view nan) {
+    if (std::isnan(v)) {
+        out << nan;
+        return;
+    }
+    char buffer[32];
+    const auto r = std::to_chars(buffer, buffer + sizeof buffer, v);
+    out << std::string_view(buffer, static_cast<std::size_t>(r.ptr - buffer));
+}
+
+void write_values(std::ostream& out, std::span<const Point2> queries, std::span<const double> v,
+                  TableFormat format) {
+    if (format == TableFormat::csv) {
+        out << "x,y,value\n";
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            put_value(out, queries[i].x, "");
+            out << ',';
+            put_value(out, queries[i].y, "");
+            out << ',';
+            put_value(out, v[i], "");
+            out << '\n';
+        }
+        return;
+    }
+    out << "{\"value\": [";
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        if (i) out << ", ";
+        put_value(out, v[i], "null");
+    }
+    out << "]}\n";
+}
 
 /// The two ends of the edge a location names (none when it names no edge).
 std::optional<std::pair<std::uint32_t, std::uint32_t>> edge_ends(const delaunay::Triangulation& t,
@@ -246,6 +291,12 @@ int run(const Options& o, const CommandLine& cli) {
     if (!queries) return exit_failure;
     steps.times.read += ms_since(queries_start);
     const std::vector<Point2>& points = input->points;
+    if (o.interpolate && input->z.size() != points.size()) {
+        steps.progress.stop();
+        std::cerr << "exidel: interpolate: the points have no values: give xy input a third "
+                     "column (--columns X,Y,Z), or geojson z coordinates or --z-property NAME\n";
+        return exit_failure;
+    }
 
     const delaunay::Options options =
         delaunay::Options{}.with_algorithm(o.algorithm).with_threads(o.threads);
@@ -286,11 +337,25 @@ int run(const Options& o, const CommandLine& cli) {
     steps.progress.phase("locating " + std::to_string(queries->size()) + " queries");
     const Clock::time_point start = Clock::now();
     std::vector<delaunay::Location> where(queries->size());
+    std::vector<double> values;
     std::visit(
         [&](const auto& k) {
             using K = std::decay_t<decltype(k)>;
             const delaunay::Locator<K> locator(points, tri, k);
             failure = locator.locate(*queries, where, {.threads = o.threads});
+            if (failure || !o.interpolate) return;
+            values.resize(queries->size());
+            if (o.method == Method::linear) {
+                delaunay::interpolate_linear(points, tri, input->z, *queries, where, values,
+                                             o.fill);
+                return;
+            }
+            std::vector<std::uint32_t> nearest(queries->size());
+            failure = locator.nearest(*queries, nearest, {.threads = o.threads});
+            if (failure) return;
+            for (std::size_t i = 0; i < nearest.size(); ++i) {
+                values[i] = nearest[i] == delaunay::no_vertex ? o.fill : input->z[nearest[i]];
+            }
         },
         *kernel);
     locate_ms = ms_since(start);
@@ -314,7 +379,9 @@ int run(const Options& o, const CommandLine& cli) {
     for (const delaunay::Location& w : where) ++counts[static_cast<int>(w.kind)];
 
     const bool written = steps.write(output, [&](std::ostream& out) {
-        if (*format == TableFormat::csv) {
+        if (o.interpolate) {
+            write_values(out, *queries, values, *format);
+        } else if (*format == TableFormat::csv) {
             write_csv(out, tri, where);
         } else {
             write_json(out, tri, where);
@@ -336,6 +403,105 @@ int locate_command(std::span<const std::string_view> args) {
     add_parsed(app, "--queries-format", "xy, json, node, f64 or geojson", o.queries_format,
                io::point_format_from_name);
     o.input.add_format_options(app);
+    o.add_report_options(app);
+    if (const std::optional<int> status = o.parse(cli, args)) return *status;
+    return run(o, cli);
+}
+
+}  // namespace exidel::cli
+
+namespace exidel::cli {
+
+namespace {
+
+constexpr std::string_view interpolate_help_head =
+    R"(usage: exidel interpolate -Q QUERIES [-i FILE] [-o FILE] [--method linear|nearest]
+                          [--fill VALUE] [--kernel NAME] [--algorithm NAME]
+                          [--format csv|json] [--queries-format FORMAT]
+                          [--input-format xy|geojson] [--columns X,Y,Z]
+                          [--z-property NAME] [--threads N] [--stats] [--quiet] [FILE]
+
+Interpolates values given at points (their z: a third column of xy input through
+--columns X,Y,Z, geojson z coordinates, or --z-property NAME) at query points, over the
+Delaunay triangulation exidel triangulate computes. Where each query lies is decided
+exactly (as exidel locate); then
+  linear   (the default) on a vertex its value exactly; on an edge the interpolation
+           between the edge's two ends (t = (q - a).(b - a) / |b - a|^2), the same from
+           both of its triangles; inside a triangle the barycentric combination of its
+           corners' values, the weights rounded to doubles (not exact: their error
+           relative to the triangle grows as the triangle gets thinner); outside the
+           convex hull --fill (default: none)
+  nearest  the value of the exactly nearest point (the kernel's compare_distance; among
+           equally near points one is chosen); --fill is used only without points
+Collinear points interpolate along their chain.
+
+)";
+
+constexpr std::string_view interpolate_help_tail =
+    R"(a repeated point's value is its first occurrence's.
+
+Queries (-Q/--queries FILE, or '-' for standard input when the points come from a file):
+any point format above, by --queries-format, else the extension, else xy.
+
+Output (-o FILE, or standard output). The format is --format, else the extension of -o
+(.csv .json), else csv.
+  csv   "x,y,value", then one line per query in order: the query's coordinates and its
+        value, each the shortest decimal that reads back as the same double; the value
+        field is empty when there is none (outside the hull without --fill)
+  json  {"value": [v | null, ...]}
+
+Options:
+  -Q, --queries FILE      the query points (required)
+  -i, --input FILE        the points with their values ('-' for standard input)
+  -o, --output FILE       write the values to FILE; written to a temporary file and
+                          renamed on success
+  -m, --method METHOD     linear (default) or nearest
+      --fill VALUE        the value outside the convex hull (linear), a number
+  -k, --kernel NAME       one of the kernels listed at the end (default: adaptive)
+  -a, --algorithm NAME    one of the algorithms listed at the end (default: external)
+      --threads N         threads (default: the hardware's); the output does not
+                          depend on it
+  -f, --format FORMAT     csv|json
+      --queries-format FMT  xy|json|node|f64|geojson
+      --input-format FMT  xy|json|node|f64|geojson (the points: xy or geojson hold values)
+      --columns X,Y,Z     xy input: the fields of x, y and the value
+      --z-property NAME   geojson input: the value is this property of each feature
+      --stats             one JSON object on standard error, as exidel locate's
+  -q, --quiet             no progress line on standard error
+  -h, --help              show this help
+
+Errors: points without values, malformed points or queries ("exidel: queries: line N:
+..."), a failed triangulation or walk: exit status 1, no output written.
+
+Exit status: 0 success, 1 bad input or failure, 2 bad options.
+
+Algorithms:
+)";
+
+}  // namespace
+
+int interpolate_command(std::span<const std::string_view> args) {
+    CommandLine cli("interpolate",
+                    point_command_help(interpolate_help_head, interpolate_help_tail));
+    CLI::App& app = cli.app;
+    Options o;
+    o.interpolate = true;
+    o.add_input_output_options(app);
+    app.add_option("-Q,--queries", o.queries);
+    add_parsed(app, "-m,--method", "linear or nearest", o.method,
+               [](const std::string& v) -> std::optional<Method> {
+                   if (v == "linear") return Method::linear;
+                   if (v == "nearest") return Method::nearest;
+                   return std::nullopt;
+               });
+    add_parsed(app, "--fill", "a number", o.fill,
+               [](const std::string& v) { return io::parse_double(v).value; });
+    o.add_threads_option(app);
+    add_parsed(app, "-f,--format", "csv or json", o.format, table_format_from_name);
+    add_parsed(app, "--queries-format", "xy, json, node, f64 or geojson", o.queries_format,
+               io::point_format_from_name);
+    o.input.add_format_options(app);
+    o.input.add_z_property_option(app);
     o.add_report_options(app);
     if (const std::optional<int> status = o.parse(cli, args)) return *status;
     return run(o, cli);

@@ -34,6 +34,8 @@ constexpr std::array commands{
             &exidel::cli::voronoi_command},
     Command{"locate", "where queries lie (inside, on an edge or vertex, outside), exactly",
             &exidel::cli::locate_command},
+    Command{"interpolate", "values at points interpolated at queries (linear, nearest)",
+            &exidel::cli::interpolate_command},
     Command{"certify", "is a triangulation (json, .ele) the Delaunay triangulation of points?",
             &exidel::cli::certify_command},
     Command{"study", "failure maps, precision sweeps, triangulation outcomes, adaptive stages",

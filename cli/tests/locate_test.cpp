@@ -5,10 +5,12 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "exidel/delaunay/interpolate.hpp"
 #include "exidel/delaunay/locate.hpp"
 #include "exidel/delaunay/triangulate.hpp"
 #include "exidel/predicates/adaptive.hpp"
@@ -135,6 +137,81 @@ TEST(LocateCommand, ErrorsWriteNothing) {
     r = run(pts + " -Q " + bad + " -o " + work_path("loc.txt"));
     EXPECT_EQ(r.status, 2);
     EXPECT_TRUE(files_containing("loc_err_out.csv.tmp").empty());
+}
+
+TEST(InterpolateCommand, LinearAndNearestMatchTheLibrary) {
+    // A plane's values are reproduced by linear interpolation up to rounding; vertices
+    // exactly; outside gets --fill; nearest gives a nearest point's value.
+    std::vector<Point2> points, queries;
+    std::ostringstream text;
+    std::vector<double> z;
+    for (int i = 0; i < 7; ++i) {
+        for (int j = 0; j < 5; ++j) {
+            const Point2 p{i * 1.5 + (j % 2) * 0.25, j * 0.75 + (i % 3) * 0.125};
+            points.push_back(p);
+            z.push_back(2 * p.x - 3 * p.y + 1);
+            text << std::hexfloat << p.x << ',' << p.y << ',' << z.back() << '\n';
+        }
+    }
+    for (int k = 0; k < 60; ++k) queries.push_back({k * 0.17 - 0.5, (k % 11) * 0.33 - 0.2});
+    queries.push_back(points[7]);
+    const std::string pts = write_file("interp_plane.csv", "x,y,z\n" + text.str());
+    const std::string qs = write_file("interp_plane_q.xy", xy_text(queries));
+    const RunResult r = run_exidel(
+        "interp", "interpolate -q " + pts + " --columns x,y,z -Q " + qs + " -f json --fill -99",
+        "");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto got = nlohmann::json::parse(r.out)["value"];
+    ASSERT_EQ(got.size(), queries.size());
+    const auto tri = delaunay::triangulate(points, AdaptiveKernel{}).triangulation;
+    const delaunay::Locator<AdaptiveKernel> locator(points, tri);
+    std::vector<delaunay::Location> where(queries.size());
+    ASSERT_FALSE(locator.locate(queries, where).has_value());
+    std::vector<double> want(queries.size());
+    delaunay::interpolate_linear(points, tri, z, queries, where, want, -99);
+    std::size_t inside = 0;
+    for (std::size_t i = 0; i < queries.size(); ++i) {
+        EXPECT_EQ(got[i].get<double>(), want[i]) << i;
+        if (where[i].kind == delaunay::LocationKind::outside) {
+            EXPECT_EQ(want[i], -99);
+        } else {
+            ++inside;
+            EXPECT_NEAR(want[i], 2 * queries[i].x - 3 * queries[i].y + 1, 1e-12) << i;
+        }
+    }
+    EXPECT_GT(inside, 20u);
+    EXPECT_EQ(got.back().get<double>(), z[7]);  // a vertex: its value exactly
+
+    const RunResult n = run_exidel(
+        "interp", "interpolate -q " + pts + " --columns x,y,z -Q " + qs + " -m nearest", "");
+    ASSERT_EQ(n.status, 0) << n.err;
+    const auto lines = split(n.out, '\n');
+    ASSERT_EQ(lines.size(), queries.size() + 1);
+    EXPECT_EQ(lines[0], "x,y,value");
+    for (std::size_t i = 0; i < queries.size(); ++i) {
+        const double value = std::stod(split(lines[i + 1], ',')[2]);
+        double best = INFINITY, best_value = 0;
+        bool tie_value = false;
+        for (std::size_t k = 0; k < points.size(); ++k) {
+            const double d = std::hypot(points[k].x - queries[i].x, points[k].y - queries[i].y);
+            if (d < best)
+                best = d, best_value = z[k], tie_value = false;
+            else if (d == best)
+                tie_value = tie_value || z[k] == value;
+        }
+        EXPECT_TRUE(value == best_value || tie_value) << i;
+    }
+}
+
+TEST(InterpolateCommand, PointsWithoutValuesAreAnError) {
+    const std::string pts = write_file("interp_novalue.xy", "0 0\n1 0\n0 1\n");
+    const std::string out = work_path("interp_novalue.csv");
+    std::remove(out.c_str());
+    const RunResult r = run_exidel("interp", "interpolate " + pts + " -Q - -o " + out, "0.1 0.1\n");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.err.find("no values"), std::string::npos) << r.err;
+    EXPECT_FALSE(exists(out));
+    EXPECT_EQ(run_exidel("interp", "interpolate " + pts + " -Q - -m cubic", "").status, 2);
 }
 
 }  // namespace
