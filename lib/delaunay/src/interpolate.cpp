@@ -28,7 +28,8 @@ void interpolate_linear(std::span<const Point2> points, const Triangulation& t,
                                     " values for " + std::to_string(points.size()) + " points");
     }
     if (where.size() != queries.size() || out.size() != queries.size()) {
-        throw std::invalid_argument("interpolate_linear: queries, locations and out differ in size");
+        throw std::invalid_argument(
+            "interpolate_linear: queries, locations and out differ in size");
     }
     const auto& T = t.triangles;
     for (std::size_t i = 0; i < queries.size(); ++i) {
