@@ -21,14 +21,14 @@ def default_threads():
 # precision, joggling, merging, keeping coplanar points, triangulating merged facets) have
 # nothing to act on and are accepted silently; Qbb and Qz keep one visible effect, the scale
 # of the lifted coordinate (paraboloid_scale, paraboloid_shift). Every other option would
-# change the answer (QbB scales the input, Qu is furthest-site, QGn/QVn select facets) or
+# change the answer (QbB scales the input, QGn/QVn select facets) or
 # concerns qhull's output files and tracing: it raises ValueError naming it.
 _QHULL_SILENT = ("Qbb", "Qc", "Qz", "Qt", "QJ", "Qx", "Q11", "Q12", "Pp")
 _QHULL_JOGGLE = re.compile(r"QJ(\d+(\.\d*)?|\.\d+)?([eE][-+]?\d+)?$")
 # scipy refuses these with incremental=True (they rescale or add a point once, at the start).
 _QHULL_NOT_INCREMENTAL = ("Qbb", "Qbk", "QBk", "QbB", "Qz")
 _QHULL_WHY = {
-    "Qu": "the furthest-site triangulation",
+    "Qu": "the furthest-site diagram, which exidel.Voronoi does not compute",
     "QbB": "it scales the input to the unit cube, which changes its Delaunay triangulation",
     "Qbk": "it scales a coordinate of the input, which changes its Delaunay triangulation",
     "QBk": "it scales a coordinate of the input, which changes its Delaunay triangulation",
@@ -37,10 +37,10 @@ _QHULL_WHY = {
 }
 
 
-def parse_qhull_options(options, incremental, default, default_incremental):
+def parse_qhull_options(options, incremental, default, default_incremental, furthest=False):
     """The set of qhull option tokens of `options` (scipy's qhull_options= string; None: the
     class's scipy default), after scipy's incremental-mode check. Raises ValueError naming an
-    option that exidel does not accept."""
+    option that exidel does not accept; "Qu" (furthest-site) is accepted when `furthest`."""
     if options is None:
         options = default_incremental if incremental else default
     if not isinstance(options, str):
@@ -51,7 +51,7 @@ def parse_qhull_options(options, incremental, default, default_incremental):
         if bad:
             raise ValueError(f"Qhull options {bad!r} are incompatible with incremental mode")
     for t in tokens:
-        if t in _QHULL_SILENT or _QHULL_JOGGLE.match(t):
+        if t in _QHULL_SILENT or _QHULL_JOGGLE.match(t) or (furthest and t == "Qu"):
             continue
         why = next((w for k, w in _QHULL_WHY.items() if t.startswith(k)), None)
         raise ValueError(
@@ -163,6 +163,11 @@ class Delaunay:
     threads    worker threads of the strips order (the result does not depend on it);
                None (the default): the hardware's thread count, as the exidel command.
     counters   record predicate calls, flips, ... in .stats["counters"].
+    furthest_site  scipy's: the furthest-site Delaunay triangulation instead, exact: the
+               triangulation of the extreme points (the hull's corners; every other point
+               is in no triangle) whose every circumcircle holds every point (Chew's
+               algorithm with the in-circle test reversed). Also qhull_options "Qu".
+               algorithm, incircle, order and counters do not apply to it.
     incremental  scipy's: allow add_points (below).
     qhull_options  scipy's qhull option string, for code written for scipy. exidel always
                answers the exact, unjoggled Delaunay triangulation of every point, so the
@@ -211,10 +216,11 @@ class Delaunay:
     ndim = 2
 
     def __init__(self, points, kernel="adaptive", algorithm="external", incircle="determinant",
-                 order="auto", threads=None, counters=False, *, incremental=False,
-                 qhull_options=None):
+                 order="auto", threads=None, counters=False, *, furthest_site=False,
+                 incremental=False, qhull_options=None):
         self._qhull_options = parse_qhull_options(qhull_options, incremental,
-                                                  "Qbb Qc Qz Q12", "Qc")
+                                                  "Qbb Qc Qz Q12", "Qc", furthest=True)
+        self.furthest_site = bool(furthest_site) or "Qu" in self._qhull_options
         self._settings = (kernel, algorithm, incircle, order, threads, counters)
         self._incremental = bool(incremental)
         self._triangulate(np.ascontiguousarray(points, dtype=np.float64))
@@ -222,7 +228,10 @@ class Delaunay:
     def _triangulate(self, points):
         kernel, algorithm, incircle, order, threads, counters = self._settings
         threads = default_threads() if threads is None else threads
-        r = _core.triangulate(points, kernel, algorithm, incircle, order, threads, counters)
+        if self.furthest_site:
+            r = _core.furthest_site(points, kernel)
+        else:
+            r = _core.triangulate(points, kernel, algorithm, incircle, order, threads, counters)
         failure = r.get("failure")
         if failure is not None:
             raise TriangulationError(failure["kind"], failure["input_index"],
@@ -245,7 +254,7 @@ class Delaunay:
             "triangles": int(self.simplices.shape[0]),
             "duplicates": int(self.duplicates.size),
         }
-        if counters:
+        if counters and "counters" in r:
             self.stats["counters"] = r["counters"]
         # Built on first use, from the arrays above.
         self._neighbors = None

@@ -13,6 +13,7 @@
 
 #include "common.hpp"
 #include "exidel/delaunay/certify.hpp"
+#include "exidel/delaunay/furthest.hpp"
 #include "exidel/delaunay/triangulate.hpp"
 #include "exidel/predicates/adaptive.hpp"
 
@@ -114,6 +115,27 @@ py::dict triangulate(py::object points_object, const std::string& kernel_name,
     return result_dict(std::move(result), counters);
 }
 
+/// The furthest-site triangulation as triangulate's dict (algorithm "furthest-site").
+py::dict furthest_site(py::object points_object, const std::string& kernel_name) {
+    const Points points = to_points(points_object, "points");
+    if (points.single) throw py::value_error("points: expected shape (n, 2), got (2,)");
+    const AnyKernel kernel = to_kernel(kernel_name);
+    delaunay::FurthestResult furthest;
+    {
+        py::gil_scoped_release release;
+        furthest = std::visit(
+            [&](const auto& k) { return delaunay::furthest_site_triangulation(points.span(), k); },
+            kernel);
+    }
+    delaunay::Result result;
+    result.triangulation = std::move(furthest.triangulation);
+    result.failure = std::move(furthest.failure);
+    py::dict d = result_dict(std::move(result), false);
+    d["algorithm"] = "furthest-site";
+    d["strategy"] = "none";
+    return d;
+}
+
 // ---------------------------------------------------------------------------------
 // Certifying what any producer wrote: its arrays go through delaunay::normalize (the
 // conventions of delaunator, scipy, Triangle, CGAL) and the certifier, as in
@@ -195,6 +217,8 @@ void bind_delaunay(py::module_& m) {
           "The Delaunay triangulation's arrays (triangles (m, 3), halfedges, hull, "
           "vertex_of_input, duplicates, collinear), or 'failure' when an inexact kernel "
           "contradicted itself. exidel.Delaunay wraps this.");
+    m.def("furthest_site", &furthest_site, py::arg("points"), py::arg("kernel") = "adaptive",
+          "The furthest-site Delaunay triangulation's arrays, as triangulate's.");
     m.def("certify", &certify_produced, py::arg("points"), py::arg("triangles"),
           py::arg("halfedges") = py::none(), py::arg("hull") = py::none(),
           py::arg("duplicates") = py::none(), py::arg("strict") = false,

@@ -126,3 +126,33 @@ def test_locate_follows_add_points():
     assert tri.find_simplex(far)[0] == -1
     tri.add_points(np.array([[6.0, 6.0], [6.0, 4.0], [4.0, 6.0]]))
     assert tri.find_simplex(far)[0] >= 0
+
+
+def test_furthest_site_matches_scipy():
+    rng = np.random.default_rng(12)
+    pts = rng.random((400, 2))
+    ours = exidel.Delaunay(pts, furthest_site=True)
+    theirs = scipy.spatial.Delaunay(pts, furthest_site=True)
+    assert ours.furthest_site
+    as_set = lambda s: {tuple(sorted(row)) for row in s.tolist()}
+    assert as_set(ours.simplices) == as_set(theirs.simplices)
+    # Every point on or inside every triangle's circumcircle, decided exactly.
+    s = ours.simplices
+    for p in pts[::7]:
+        q = np.broadcast_to(p, (len(s), 2))
+        assert (exidel.incircle(pts[s[:, 0]], pts[s[:, 1]], pts[s[:, 2]], q) >= 0).all()
+    # qhull's "Qu" asks for the same; locate works on it too.
+    np.testing.assert_array_equal(exidel.Delaunay(pts, qhull_options="Qu").simplices,
+                                  ours.simplices)
+    assert (ours.find_simplex(pts[ours.hull]) >= 0).all()
+
+
+def test_furthest_site_on_cocircular_and_collinear_points():
+    angles = np.arange(12) * (np.pi / 6)
+    circle = np.round(np.stack([np.cos(angles), np.sin(angles)], axis=1) * 5)
+    square = np.array([[0, 0], [2, 0], [2, 2], [0, 2], [1, 1], [1, 0]], dtype=float)
+    tri = exidel.Delaunay(square, furthest_site=True)
+    assert tri.nsimplex == 2 and sorted(tri.hull.tolist()) == [0, 1, 2, 3]
+    assert exidel.Delaunay(circle, furthest_site=True).nsimplex >= 1
+    line = exidel.Delaunay(np.array([[0, 0], [1, 1], [2, 2]], dtype=float), furthest_site=True)
+    assert line.collinear and line.nsimplex == 0

@@ -66,14 +66,16 @@ RC_GTEST_PROP(Furthest, EveryFamilyGivesTheFurthestSiteTriangulation, ()) {
 TEST(Furthest, RegularPolygonAndInteriorPoints) {
     // A square with interior points: the two triangles of the square (its corners are
     // cocircular, either diagonal is right); a point inside a hull edge is in neither.
-    const std::vector<Point2> p = {{0, 0}, {2, 0}, {2, 2}, {0, 2}, {1, 1}, {1, 0}, {0.5, 1.5}, {2, 2}};
+    const std::vector<Point2> p = {{0, 0}, {2, 0}, {2, 2},     {0, 2},
+                                   {1, 1}, {1, 0}, {0.5, 1.5}, {2, 2}};
     const FurthestResult r = delaunay::furthest_site_triangulation(p, AdaptiveKernel{});
     ASSERT_TRUE(r.ok());
     EXPECT_EQ(r.triangulation.triangle_count(), 2u);
     EXPECT_EQ(r.triangulation.hull, (std::vector<std::uint32_t>{0, 1, 2, 3}));
     EXPECT_EQ(r.triangulation.duplicates, (std::vector<std::uint32_t>{7}));
     const std::vector<Point2> line = {{0, 0}, {1, 1}, {2, 2}};
-    EXPECT_TRUE(delaunay::furthest_site_triangulation(line, AdaptiveKernel{}).triangulation.collinear);
+    EXPECT_TRUE(
+        delaunay::furthest_site_triangulation(line, AdaptiveKernel{}).triangulation.collinear);
     const std::vector<Point2> bad = {{0, 0}, {1, NAN}, {2, 2}};
     const FurthestResult f = delaunay::furthest_site_triangulation(bad, AdaptiveKernel{});
     ASSERT_FALSE(f.ok());

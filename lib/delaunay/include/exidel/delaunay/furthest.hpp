@@ -127,9 +127,9 @@ FurthestResult furthest_site_triangulation(std::span<const Point2> points, const
             const std::uint32_t a = T[a_e], b = T[ne], c = T[pe], d = T[pf];
             if (k.incircle(at(a), at(b), at(c), at(d)) != Sign::negative) continue;
             if (++flips > flip_bound) {
-                r.failure = Failure{FailureKind::flips_exceeded, corner[v], i,
-                                    "furthest-site flips did not end after inserting corner " +
-                                        std::to_string(i)};
+                r.failure = Failure{
+                    FailureKind::flips_exceeded, corner[v], i,
+                    "furthest-site flips did not end after inserting corner " + std::to_string(i)};
                 t.triangles.clear();
                 t.halfedges.clear();
                 return r;
