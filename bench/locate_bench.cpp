@@ -28,22 +28,16 @@
 #include "exidel/delaunay/triangulate.hpp"
 #include "exidel/predicates/adaptive.hpp"
 #include "generators.hpp"
+#include "timing.hpp"
 
 namespace {
 
 using namespace exidel;
 using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
 using DT = CGAL::Delaunay_triangulation_2<Epick>;
-using Clock = std::chrono::steady_clock;
-
-double ms(Clock::time_point a, Clock::time_point b) {
-    return std::chrono::duration<double, std::milli>(b - a).count();
-}
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : (v[v.size() / 2 - 1] + v[v.size() / 2]) / 2;
-}
+using bench::Clock;
+using bench::median;
+using bench::ms;
 
 struct Input {
     std::vector<Point2> points, queries;

@@ -28,6 +28,7 @@
 #include "exidel/delaunay/voronoi.hpp"
 #include "exidel/predicates/adaptive.hpp"
 #include "generators.hpp"
+#include "timing.hpp"
 
 namespace {
 
@@ -37,16 +38,9 @@ using DT = CGAL::Delaunay_triangulation_2<Epick>;
 using VD =
     CGAL::Voronoi_diagram_2<DT, CGAL::Delaunay_triangulation_adaptation_traits_2<DT>,
                             CGAL::Delaunay_triangulation_caching_degeneracy_removal_policy_2<DT>>;
-using Clock = std::chrono::steady_clock;
-
-double ms(Clock::time_point a, Clock::time_point b) {
-    return std::chrono::duration<double, std::milli>(b - a).count();
-}
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : (v[v.size() / 2 - 1] + v[v.size() / 2]) / 2;
-}
+using bench::Clock;
+using bench::median;
+using bench::ms;
 
 std::vector<Point2> make_points(const std::string& input, std::size_t n) {
     bench::Rng rng(20261202);

@@ -63,6 +63,19 @@ def parse_qhull_options(options, incremental, default, default_incremental, furt
     return frozenset("QJ" if _QHULL_JOGGLE.match(t) else t for t in tokens)
 
 
+def incremental_points(obj, points):
+    """add_points' checks, with scipy's errors: all the points afterwards (float64), or None
+    when `points` is empty. `obj` has ._incremental, .ndim and .points."""
+    if not obj._incremental:
+        raise RuntimeError("incremental mode not enabled or already closed")
+    points = np.asarray(points)
+    if points.ndim != 2 or points.shape[1] != obj.ndim:
+        raise ValueError("invalid size for new points array")
+    if points.size == 0:
+        return None
+    return np.concatenate([obj.points, points.astype(np.float64)])
+
+
 def _split(x):
     """Veltkamp's split of |x| <= 1: x == hi + lo exactly, each with at most 26 bits."""
     c = 134217729.0 * x
@@ -345,14 +358,9 @@ class Delaunay:
         result is the exact triangulation, but a call costs as much as the first one (no
         point is inserted into the existing triangles). `restart` is accepted for scipy's
         sake and changes nothing: every call starts over."""
-        if not self._incremental:
-            raise RuntimeError("incremental mode not enabled or already closed")
-        points = np.asarray(points)
-        if points.ndim != 2 or points.shape[1] != self.ndim:
-            raise ValueError("invalid size for new points array")
-        if points.size == 0:
-            return
-        self._triangulate(np.concatenate([self.points, points.astype(np.float64)]))
+        points = incremental_points(self, points)
+        if points is not None:
+            self._triangulate(points)
 
     def close(self):
         """Ends incremental mode (scipy's close): add_points raises RuntimeError afterwards.

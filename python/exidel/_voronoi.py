@@ -8,7 +8,8 @@ import gc
 import numpy as np
 
 from . import _core
-from ._delaunay import TriangulationError, default_threads, parse_qhull_options
+from ._delaunay import (TriangulationError, default_threads, incremental_points,
+                        parse_qhull_options)
 
 
 class ClippedVoronoi:
@@ -169,14 +170,9 @@ class Voronoi:
         scipy's semantics and errors (RuntimeError when not incremental or closed,
         ValueError for a shape other than (k, 2)). Each call computes the diagram of all
         points again, exactly; `restart` changes nothing."""
-        if not self._incremental:
-            raise RuntimeError("incremental mode not enabled or already closed")
-        points = np.asarray(points)
-        if points.ndim != 2 or points.shape[1] != self.ndim:
-            raise ValueError("invalid size for new points array")
-        if points.size == 0:
-            return
-        self._build(np.concatenate([self.points, points.astype(np.float64)]))
+        points = incremental_points(self, points)
+        if points is not None:
+            self._build(points)
 
     def close(self):
         """Ends incremental mode (scipy's close): add_points raises RuntimeError afterwards."""

@@ -237,6 +237,7 @@ private:
         std::uint32_t triangle;
     };
     std::uint32_t jump_start(Point2 q) const;
+    std::size_t chain_position(Point2 q) const;
     Location locate_collinear(Point2 q) const;
     template <PredicateKernel W>
     Location walk_from(const W& walker, Point2 q, std::uint32_t start, detail::WalkRandom& random,
@@ -386,19 +387,27 @@ std::uint32_t Locator<K>::jump_start(Point2 q) const {
     return best;
 }
 
+/// The first position of the collinear chain whose point is not lexicographically below q
+/// (exact comparisons of coordinates).
+template <PredicateKernel K>
+std::size_t Locator<K>::chain_position(Point2 q) const {
+    const auto less = [this](std::uint32_t v, Point2 p) {
+        const Point2 a = points_[v];
+        return a.x < p.x || (a.x == p.x && a.y < p.y);
+    };
+    const auto& chain = tri_.hull;
+    return static_cast<std::size_t>(std::lower_bound(chain.begin(), chain.end(), q, less) -
+                                    chain.begin());
+}
+
 /// Collinear points: exact comparisons of coordinates along the chain, and orient2d for
 /// whether q is on its line.
 template <PredicateKernel K>
 Location Locator<K>::locate_collinear(Point2 q) const {
     const auto& chain = tri_.hull;
-    const auto less = [this](std::uint32_t v, Point2 p) {
-        const Point2 a = points_[v];
-        return a.x < p.x || (a.x == p.x && a.y < p.y);
-    };
-    const auto it = std::lower_bound(chain.begin(), chain.end(), q, less);
-    const auto i = static_cast<std::size_t>(it - chain.begin());
-    if (i < chain.size() && points_[*it].x == q.x && points_[*it].y == q.y) {
-        return {LocationKind::on_vertex, -1, -1, *it};
+    const std::size_t i = chain_position(q);
+    if (i < chain.size() && points_[chain[i]].x == q.x && points_[chain[i]].y == q.y) {
+        return {LocationKind::on_vertex, -1, -1, chain[i]};
     }
     if (i == 0 || i == chain.size() ||
         kernel_.orient2d(points_[chain.front()], points_[chain.back()], q) != Sign::zero) {
@@ -558,13 +567,7 @@ std::optional<Failure> Locator<K>::nearest(std::span<const Point2> queries,
                         out[i] = no_vertex;
                         continue;
                     }
-                    const auto less = [this](std::uint32_t v, Point2 p) {
-                        const Point2 a = points_[v];
-                        return a.x < p.x || (a.x == p.x && a.y < p.y);
-                    };
-                    std::size_t at = static_cast<std::size_t>(
-                        std::lower_bound(chain.begin(), chain.end(), q, less) - chain.begin());
-                    at = std::min(at, chain.size() - 1);
+                    std::size_t at = std::min(chain_position(q), chain.size() - 1);
                     const auto nearer = [&](std::size_t a, std::size_t b) {
                         return kernel_.compare_distance(q, points_[chain[a]], points_[chain[b]]) ==
                                Sign::negative;
