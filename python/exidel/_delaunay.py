@@ -249,26 +249,31 @@ class Delaunay:
         if failure is not None:
             raise TriangulationError(failure["kind"], failure["input_index"],
                                      failure["insertion"], failure["message"])
-        self.points = points
         self.kernel = _core.kernel_name(kernel)
+        self._mutable = None  # add_points' triangulation, made on first use
+        self._adopt(points, r)
+        self.stats.update(algorithm=r["algorithm"], order=r["strategy"], strips=r["strips"])
+        if counters and "counters" in r:
+            self.stats["counters"] = r["counters"]
+
+    def _adopt(self, points, r):
+        """points and the arrays of r (triangulate's or a snapshot's) as the attributes."""
+        self.points = points
         self.simplices = r["triangles"]
         self.halfedges = r["halfedges"]
         self.hull = r["hull"]
         self.vertex_of_input = r["vertex_of_input"]
         self.duplicates = r["duplicates"]
         self.collinear = bool(r["collinear"])
-        self.stats = {
-            "algorithm": r["algorithm"],
-            "order": r["strategy"],
-            "strips": r["strips"],
+        self.stats = dict(getattr(self, "stats", {}))
+        self.stats.pop("counters", None)
+        self.stats.update({
             "kernel": self.kernel,
             "points": int(self.points.shape[0]),
             "vertices": int(self.points.shape[0] - self.duplicates.size),
             "triangles": int(self.simplices.shape[0]),
             "duplicates": int(self.duplicates.size),
-        }
-        if counters and "counters" in r:
-            self.stats["counters"] = r["counters"]
+        })
         # Built on first use, from the arrays above.
         self._neighbors = None
         self._transform = None
@@ -354,18 +359,35 @@ class Delaunay:
         RuntimeError when the triangulation was not made incremental or close() was called,
         ValueError when `points` is not (k, 2).
 
-        Each call triangulates all the points again, exactly, with the same settings: the
-        result is the exact triangulation, but a call costs as much as the first one (no
-        point is inserted into the existing triangles). `restart` is accepted for scipy's
-        sake and changes nothing: every call starts over."""
-        points = incremental_points(self, points)
-        if points is not None:
-            self._triangulate(points)
+        The points are inserted one by one into the existing triangulation (exidel's
+        MutableTriangulation: located by a walk, then Lawson's flips), exactly with an
+        exact kernel; the arrays are then read out of it again, which costs O(n) per call.
+        With furthest_site=True every call triangulates all the points again. `restart` is
+        accepted for scipy's sake and changes nothing: the result is the exact
+        triangulation either way."""
+        all_points = incremental_points(self, points)
+        if all_points is None:
+            return
+        if self.furthest_site:
+            self._triangulate(all_points)
+            return
+        new = all_points[self.points.shape[0]:]
+        try:
+            if self._mutable is None:
+                self._mutable = _core.MutableTriangulation(self.points, self.kernel)
+            self._mutable.insert(new)
+            r = self._mutable.snapshot()
+        except RuntimeError as e:  # "flips_exceeded: ..." from an inexact kernel
+            self._mutable = None
+            kind_name, _, message = str(e).partition(": ")
+            raise TriangulationError(kind_name, None, None, message) from None
+        self._adopt(all_points, r)
 
     def close(self):
         """Ends incremental mode (scipy's close): add_points raises RuntimeError afterwards.
         The triangulation and its attributes stay."""
         self._incremental = False
+        self._mutable = None
 
     @property
     def npoints(self):

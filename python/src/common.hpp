@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "exidel/delaunay/algorithms.hpp"
+#include "exidel/delaunay/result.hpp"
 #include "exidel/predicates/registry.hpp"
 #include "exidel/predicates/types.hpp"
 
@@ -87,6 +88,10 @@ inline py::array_t<std::int32_t> to_int32(std::vector<std::uint32_t>&& values) {
     return to_int32(std::move(values), {n});
 }
 
+/// A triangulation's arrays into d: triangles (m, 3), halfedges, hull, vertex_of_input,
+/// duplicates (int32) and collinear, the keys exidel.Delaunay reads.
+void triangulation_arrays(delaunay::Triangulation&& t, py::dict& d);
+
 /// (n, 2) float64 array of points.
 py::array_t<double> to_numpy(std::vector<Point2>&& points);
 
@@ -94,5 +99,6 @@ void bind_predicates(py::module_& m);
 void bind_delaunay(py::module_& m);
 void bind_voronoi(py::module_& m);
 void bind_locate(py::module_& m);
+void bind_mutable(py::module_& m);
 
 }  // namespace exidel::python

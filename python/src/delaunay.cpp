@@ -19,6 +19,16 @@
 
 namespace exidel::python {
 
+void triangulation_arrays(delaunay::Triangulation&& t, py::dict& d) {
+    const auto m = static_cast<py::ssize_t>(t.triangle_count());
+    d["triangles"] = to_int32(std::move(t.triangles), {m, 3});
+    d["halfedges"] = to_numpy(std::move(t.halfedges));
+    d["hull"] = to_int32(std::move(t.hull));
+    d["vertex_of_input"] = to_int32(std::move(t.vertex_of_input));
+    d["duplicates"] = to_int32(std::move(t.duplicates));
+    d["collinear"] = t.collinear;
+}
+
 namespace {
 
 using delaunay::Algorithm;
@@ -79,14 +89,7 @@ py::dict result_dict(delaunay::Result&& r, bool counters) {
         d["failure"] = failure;
         return d;
     }
-    delaunay::Triangulation& t = r.triangulation;
-    const auto m = static_cast<py::ssize_t>(t.triangle_count());
-    d["triangles"] = to_int32(std::move(t.triangles), {m, 3});
-    d["halfedges"] = to_numpy(std::move(t.halfedges));
-    d["hull"] = to_int32(std::move(t.hull));
-    d["vertex_of_input"] = to_int32(std::move(t.vertex_of_input));
-    d["duplicates"] = to_int32(std::move(t.duplicates));
-    d["collinear"] = t.collinear;
+    triangulation_arrays(std::move(r.triangulation), d);
     return d;
 }
 

@@ -137,4 +137,5 @@ PYBIND11_MODULE(_core, m) {
     bind_delaunay(m);
     bind_voronoi(m);
     bind_locate(m);
+    bind_mutable(m);
 }

@@ -31,6 +31,7 @@ std::string_view to_string(FailureKind kind) noexcept {
         case FailureKind::cavity_inconsistent: return "cavity_inconsistent";
         case FailureKind::flips_exceeded: return "flips_exceeded";
         case FailureKind::location_inconsistent: return "location_inconsistent";
+        case FailureKind::update_inconsistent: return "update_inconsistent";
     }
     return "unknown";
 }

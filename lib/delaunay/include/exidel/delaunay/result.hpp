@@ -168,6 +168,7 @@ enum class FailureKind {
     cavity_inconsistent,    ///< bowyer-watson: the conflict triangles do not form a disc
     flips_exceeded,         ///< randomized: more flips than the new point can have neighbours
     location_inconsistent,  ///< a located point is on all three edge lines of a triangle
+    update_inconsistent,    ///< an insertion or removal met a mesh no consistent kernel leaves
 };
 
 std::string_view to_string(FailureKind kind) noexcept;
