@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
 
 namespace exidel::bench {
@@ -296,6 +298,22 @@ const Family& family(const std::string& name) {
         if (f.name == name) return f;
     }
     throw std::invalid_argument("no input family named '" + name + "'");
+}
+
+std::vector<Point2> uniform_or_grid(const std::string& input, std::size_t n, std::uint64_t seed) {
+    Rng rng(seed);
+    std::vector<Point2> p;
+    if (input == "uniform") {
+        for (std::size_t i = 0; i < n; ++i) p.push_back({unit(rng), unit(rng)});
+    } else if (input == "grid") {
+        const auto side = static_cast<std::size_t>(std::sqrt(static_cast<double>(n)));
+        for (std::size_t i = 0; i < side; ++i)
+            for (std::size_t j = 0; j < side; ++j) p.push_back({double(i), double(j)});
+    } else {
+        std::fprintf(stderr, "unknown --input '%s' (uniform or grid)\n", input.c_str());
+        std::exit(2);
+    }
+    return p;
 }
 
 }  // namespace exidel::bench

@@ -52,4 +52,9 @@ double unit(Rng& rng);
 /// A uniformly random integer in [lo, hi].
 std::int64_t integer(Rng& rng, std::int64_t lo, std::int64_t hi);
 
+/// The benchmarks' point sets: "uniform", n points uniform in the unit square from `seed`;
+/// "grid", the sqrt(n) x sqrt(n) integer lattice (every square's corners cocircular), in
+/// row order. Exits with status 2 and a message for any other name.
+std::vector<Point2> uniform_or_grid(const std::string& input, std::size_t n, std::uint64_t seed);
+
 }  // namespace exidel::bench

@@ -38,19 +38,10 @@ using bench::median;
 using bench::ms;
 
 std::vector<Point2> make_points(const std::string& input, std::size_t n) {
-    bench::Rng rng(20261206);
-    std::vector<Point2> p;
-    if (input == "uniform") {
-        for (std::size_t i = 0; i < n; ++i) p.push_back({bench::unit(rng), bench::unit(rng)});
-    } else if (input == "grid") {
-        const auto side = static_cast<std::size_t>(std::sqrt(static_cast<double>(n)));
-        for (std::size_t i = 0; i < side; ++i)
-            for (std::size_t j = 0; j < side; ++j) p.push_back({double(i), double(j)});
+    std::vector<Point2> p = bench::uniform_or_grid(input, n, 20261206);
+    if (input == "grid") {  // inserted in a random order
         std::mt19937_64 shuffle(7);
         std::shuffle(p.begin(), p.end(), shuffle);
-    } else {
-        std::fprintf(stderr, "unknown --input '%s' (uniform or grid)\n", input.c_str());
-        std::exit(2);
     }
     return p;
 }

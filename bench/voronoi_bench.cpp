@@ -43,19 +43,7 @@ using bench::median;
 using bench::ms;
 
 std::vector<Point2> make_points(const std::string& input, std::size_t n) {
-    bench::Rng rng(20261202);
-    std::vector<Point2> p;
-    if (input == "uniform") {
-        for (std::size_t i = 0; i < n; ++i) p.push_back({bench::unit(rng), bench::unit(rng)});
-    } else if (input == "grid") {  // every square's four corners cocircular
-        const auto side = static_cast<std::size_t>(std::sqrt(static_cast<double>(n)));
-        for (std::size_t i = 0; i < side; ++i)
-            for (std::size_t j = 0; j < side; ++j) p.push_back({double(i), double(j)});
-    } else {
-        std::fprintf(stderr, "unknown --input '%s' (uniform or grid)\n", input.c_str());
-        std::exit(2);
-    }
-    return p;
+    return bench::uniform_or_grid(input, n, 20261202);  // grid: every square cocircular
 }
 
 }  // namespace
