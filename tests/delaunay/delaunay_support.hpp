@@ -141,6 +141,53 @@ inline std::vector<Point2> uniform_points(std::size_t n, std::uint64_t seed) {
     return p;
 }
 
+/// The queries that matter: every input point, the midpoints of the edges (on the edge when
+/// the midpoint is exact), points beyond the ends of hull edges on their lines, the
+/// points mirrored through others, and random points of the bounding box and far outside.
+inline std::vector<Point2> degenerate_queries(std::span<const Point2> points,
+                                              const delaunay::Triangulation& t,
+                                              std::uint64_t seed) {
+    std::vector<Point2> q(points.begin(), points.end());
+    const auto& T = t.triangles;
+    for (std::size_t e = 0; e < T.size(); e += 2) {
+        const Point2 a = points[T[e]], b = points[T[delaunay::next_halfedge(e)]];
+        q.push_back({a.x * 0.5 + b.x * 0.5, a.y * 0.5 + b.y * 0.5});
+        if (t.halfedges[e] < 0) q.push_back({2 * b.x - a.x, 2 * b.y - a.y});
+    }
+    if (t.collinear && t.hull.size() >= 2) {
+        const Point2 a = points[t.hull.front()], b = points[t.hull.back()];
+        q.push_back({2 * b.x - a.x, 2 * b.y - a.y});
+        q.push_back({2 * a.x - b.x, 2 * a.y - b.y});
+        for (std::size_t i = 0; i + 1 < t.hull.size(); ++i) {
+            const Point2 u = points[t.hull[i]], v = points[t.hull[i + 1]];
+            q.push_back({u.x * 0.5 + v.x * 0.5, u.y * 0.5 + v.y * 0.5});
+        }
+    }
+    double lo_x = 0, hi_x = 1, lo_y = 0, hi_y = 1;
+    if (!points.empty()) {
+        lo_x = hi_x = points[0].x;
+        lo_y = hi_y = points[0].y;
+        for (const Point2& p : points) {
+            lo_x = std::min(lo_x, p.x), hi_x = std::max(hi_x, p.x);
+            lo_y = std::min(lo_y, p.y), hi_y = std::max(hi_y, p.y);
+        }
+    }
+    const auto random = uniform_points(16, seed);
+    for (const Point2& r : random) {
+        q.push_back({lo_x + (hi_x - lo_x) * r.x, lo_y + (hi_y - lo_y) * r.y});
+    }
+    q.push_back({hi_x + (hi_x - lo_x) + 1, hi_y});
+    q.push_back({lo_x - 1e300, lo_y});
+    for (std::size_t i = 0; i + 1 < points.size() && i < 8; ++i) {
+        q.push_back({2 * points[i + 1].x - points[i].x, 2 * points[i + 1].y - points[i].y});
+    }
+    std::vector<Point2> finite;
+    for (const Point2& p : q) {
+        if (std::isfinite(p.x) && std::isfinite(p.y)) finite.push_back(p);
+    }
+    return finite;
+}
+
 inline std::vector<Point2> gaussian_points(std::uint64_t seed, std::size_t n) {
     std::mt19937_64 rng(seed);
     std::normal_distribution<double> d(0.0, 1.0);

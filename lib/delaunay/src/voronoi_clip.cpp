@@ -15,15 +15,15 @@
 #include <utility>
 #include <vector>
 
-#include <boost/multiprecision/gmp.hpp>
-
 #include "exidel/delaunay/voronoi.hpp"
+#include "rational.hpp"
 
 namespace exidel::delaunay {
 
 namespace {
 
-using Rational = boost::multiprecision::mpq_rational;
+using detail::Rational;
+using detail::round_rational;
 
 /// A line's tag: a neighbour's input index (the bisector of the site and that neighbour)
 /// or one of the box's sides.
@@ -94,21 +94,6 @@ std::vector<Corner> cut(const std::vector<Corner>& poly, const HalfPlane& h) {
     }
     if (merged.size() < 3) merged.clear();
     return merged;
-}
-
-/// The magnitude of an integer in little-endian 64-bit words.
-std::vector<std::uint64_t> words(const boost::multiprecision::mpz_int& v) {
-    std::vector<std::uint64_t> w((mpz_sizeinbase(v.backend().data(), 2) + 63) / 64 + 1, 0);
-    std::size_t count = 0;
-    mpz_export(w.data(), &count, -1, sizeof(std::uint64_t), 0, 0, v.backend().data());
-    w.resize(count);
-    return w;
-}
-
-/// The exact value rounded to nearest (exidel::round_quotient, circumcenter's rounding).
-double round_rational(const Rational& r) {
-    const auto num = numerator(r), den = denominator(r);
-    return round_quotient(words(num), words(den), num < 0);
 }
 
 }  // namespace

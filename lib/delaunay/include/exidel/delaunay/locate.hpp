@@ -124,6 +124,19 @@ struct WalkRandom {
 
 enum class WalkStatus : std::uint8_t { found, exceeded, inconsistent };
 
+/// A Locator's copy of the mesh, laid out for walks (see Locator's members), for the
+/// queries built on location (natural.hpp, the neighbour searches): local half-edge
+/// 3 k + j is the triangulation's 3 triangle_of_local[k] + j.
+struct LocalMesh {
+    std::span<const std::uint32_t> triangles;          // corners, as local vertices
+    std::span<const std::int32_t> halfedges;           // twins, as local half-edges
+    std::span<const Point2> points;                    // local vertex -> coordinates
+    std::span<const std::uint32_t> input_of_local;     // local vertex -> input index
+    std::span<const std::uint32_t> triangle_of_local;  // local triangle -> triangle
+    std::span<const std::uint32_t> local_of_triangle;  // triangle -> local triangle
+    std::span<const std::int32_t> vertex_edge;         // local vertex -> a half-edge out
+};
+
 /// The remembering stochastic visibility walk from triangle t (see the top of the file).
 /// P: points by input index; T, H: Triangulation::triangles and ::halfedges.
 template <PredicateKernel K>
@@ -230,6 +243,11 @@ public:
     const Triangulation& triangulation() const noexcept { return tri_; }
     std::span<const Point2> points() const noexcept { return points_; }
     const K& kernel() const noexcept { return kernel_; }
+    /// The walks' copy of the mesh (empty without triangles).
+    detail::LocalMesh local_mesh() const noexcept {
+        return {local_triangles_,   local_halfedges_,   local_points_, input_of_local_,
+                triangle_of_local_, local_of_triangle_, vertex_edge_};
+    }
 
 private:
     struct Sample {
