@@ -21,6 +21,7 @@
 #include "common.hpp"
 #include "exidel/delaunay/interpolate.hpp"
 #include "exidel/delaunay/locate.hpp"
+#include "exidel/delaunay/natural.hpp"
 #include "exidel/delaunay/triangulate.hpp"
 #include "exidel/io/number.hpp"
 #include "exidel/io/points.hpp"
@@ -120,7 +121,7 @@ std::optional<TableFormat> table_format_from_path(std::string_view path) {
                                          : table_format_from_name(path.substr(dot + 1));
 }
 
-enum class Method { linear, nearest };
+enum class Method { linear, nearest, natural };
 
 struct Options : PointCommand {
     std::optional<std::string> queries;
@@ -128,6 +129,7 @@ struct Options : PointCommand {
     std::optional<TableFormat> format;
     bool interpolate = false;  // exidel interpolate: values, not locations
     Method method = Method::linear;
+    bool exact = false;  // natural: exact rationals
     double fill = std::numeric_limits<double>::quiet_NaN();
 };
 
@@ -350,6 +352,14 @@ int run(const Options& o, const CommandLine& cli) {
                                              o.fill);
                 return;
             }
+            if (o.method == Method::natural) {
+                failure = delaunay::interpolate_natural(
+                    locator, input->z, 1, *queries, values, o.fill,
+                    {.locate = {.threads = o.threads},
+                     .arithmetic = o.exact ? delaunay::NaturalArithmetic::exact
+                                           : delaunay::NaturalArithmetic::rounded});
+                return;
+            }
             std::vector<std::uint32_t> nearest(queries->size());
             failure = locator.nearest(*queries, nearest, {.threads = o.threads});
             if (failure) return;
@@ -415,7 +425,8 @@ namespace exidel::cli {
 namespace {
 
 constexpr std::string_view interpolate_help_head =
-    R"(usage: exidel interpolate -Q QUERIES [-i FILE] [-o FILE] [--method linear|nearest]
+    R"(usage: exidel interpolate -Q QUERIES [-i FILE] [-o FILE]
+                          [--method linear|nearest|natural] [--exact]
                           [--fill VALUE] [--kernel NAME] [--algorithm NAME]
                           [--format csv|json] [--queries-format FORMAT]
                           [--input-format xy|geojson] [--columns X,Y,Z]
@@ -433,6 +444,12 @@ exactly (as exidel locate); then
            convex hull --fill (default: none)
   nearest  the value of the exactly nearest point (the kernel's compare_distance; among
            equally near points one is chosen); --fill is used only without points
+  natural  Sibson's natural neighbour interpolation: the share of each point's Voronoi
+           cell the query would take, the neighbours decided exactly (the kernel's
+           incircle), the areas in doubles relative to the query (no proven error bound;
+           exact where a rounded determinant cannot decide), or with --exact in exact
+           rationals, each value then the double nearest to the exact interpolant; on a
+           vertex its value, on a hull edge linear along it, outside --fill
 Collinear points interpolate along their chain.
 
 )";
@@ -455,7 +472,8 @@ Options:
   -i, --input FILE        the points with their values ('-' for standard input)
   -o, --output FILE       write the values to FILE; written to a temporary file and
                           renamed on success
-  -m, --method METHOD     linear (default) or nearest
+  -m, --method METHOD     linear (default), nearest or natural
+      --exact             natural: the areas in exact rationals (slower)
       --fill VALUE        the value outside the convex hull (linear), a number
   -k, --kernel NAME       one of the kernels listed at the end (default: adaptive)
   -a, --algorithm NAME    one of the algorithms listed at the end (default: external)
@@ -488,12 +506,14 @@ int interpolate_command(std::span<const std::string_view> args) {
     o.interpolate = true;
     o.add_input_output_options(app);
     app.add_option("-Q,--queries", o.queries);
-    add_parsed(app, "-m,--method", "linear or nearest", o.method,
+    add_parsed(app, "-m,--method", "linear, nearest or natural", o.method,
                [](const std::string& v) -> std::optional<Method> {
                    if (v == "linear") return Method::linear;
                    if (v == "nearest") return Method::nearest;
+                   if (v == "natural") return Method::natural;
                    return std::nullopt;
                });
+    app.add_flag("--exact", o.exact);
     add_parsed(app, "--fill", "a number", o.fill,
                [](const std::string& v) { return io::parse_double(v).value; });
     o.add_threads_option(app);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "exidel/delaunay/interpolate.hpp"
+#include "exidel/delaunay/natural.hpp"
 #include "exidel/delaunay/locate.hpp"
 #include "exidel/delaunay/triangulate.hpp"
 #include "exidel/predicates/adaptive.hpp"
@@ -200,6 +201,52 @@ TEST(InterpolateCommand, LinearAndNearestMatchTheLibrary) {
                 tie_value = tie_value || z[k] == value;
         }
         EXPECT_TRUE(value == best_value || tie_value) << i;
+    }
+}
+
+TEST(InterpolateCommand, NaturalMatchesTheLibrary) {
+    // Sibson's interpolant reproduces a plane; --exact gives the library's exact values.
+    std::vector<Point2> points, queries;
+    std::ostringstream text;
+    std::vector<double> z;
+    for (int i = 0; i < 9; ++i) {
+        for (int j = 0; j < 6; ++j) {
+            const Point2 p{i * 1.5 + (j % 2) * 0.25, j * 0.75 + (i % 3) * 0.125};
+            points.push_back(p);
+            z.push_back(2 * p.x - 3 * p.y + 1);
+            text << std::hexfloat << p.x << ',' << p.y << ',' << z.back() << '\n';
+        }
+    }
+    for (int k = 0; k < 80; ++k) queries.push_back({k * 0.17 - 0.5, (k % 13) * 0.33 - 0.2});
+    queries.push_back(points[9]);
+    const std::string pts = write_file("interp_natural.csv", "x,y,z\n" + text.str());
+    const std::string qs = write_file("interp_natural_q.xy", xy_text(queries));
+    const auto tri = delaunay::triangulate(points, AdaptiveKernel{}).triangulation;
+    const delaunay::Locator<AdaptiveKernel> locator(points, tri);
+    for (const bool exact : {false, true}) {
+        const RunResult r =
+            run_exidel("interp",
+                       "interpolate -q " + pts + " --columns x,y,z -Q " + qs +
+                           " -f json --fill -99 -m natural" + (exact ? " --exact" : ""),
+                       "");
+        ASSERT_EQ(r.status, 0) << r.err;
+        const auto got = nlohmann::json::parse(r.out)["value"];
+        ASSERT_EQ(got.size(), queries.size());
+        std::vector<double> want(queries.size());
+        ASSERT_FALSE(delaunay::interpolate_natural(
+            locator, z, 1, queries, want, -99,
+            {.arithmetic = exact ? delaunay::NaturalArithmetic::exact
+                                 : delaunay::NaturalArithmetic::rounded}));
+        std::size_t inside = 0;
+        for (std::size_t i = 0; i < queries.size(); ++i) {
+            EXPECT_EQ(got[i].get<double>(), want[i]) << i;
+            if (want[i] != -99) {
+                ++inside;
+                EXPECT_NEAR(want[i], 2 * queries[i].x - 3 * queries[i].y + 1, 1e-12) << i;
+            }
+        }
+        EXPECT_GT(inside, 30u);
+        EXPECT_EQ(got.back().get<double>(), z[9]);
     }
 }
 

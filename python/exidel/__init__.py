@@ -16,12 +16,13 @@ from ._core import (__version__, algorithms, build_info, compare_distance, incir
                     incircle_cosine, insphere, kernel_spellings, orient2d, orient3d)
 from ._core import location_kinds
 from ._delaunay import Certificate, Delaunay, Finding, Location, TriangulationError, certify
-from ._interpolate import LinearNDInterpolator, NearestNDInterpolator, griddata
+from ._interpolate import (LinearNDInterpolator, NaturalNeighborInterpolator,
+                           NearestNDInterpolator, griddata)
 from ._voronoi import ClippedVoronoi, Voronoi
 from ._core import circumcenter, circumcenter_statuses
 
 __all__ = ["__version__", "algorithms", "build_info", "kernel_spellings", "orient2d",
            "incircle", "incircle_cosine", "compare_distance", "orient3d", "insphere", "Delaunay", "TriangulationError",
            "certify", "Certificate", "Finding", "Location", "location_kinds", "LinearNDInterpolator",
-           "NearestNDInterpolator", "griddata", "Voronoi", "ClippedVoronoi", "circumcenter",
+           "NearestNDInterpolator", "NaturalNeighborInterpolator", "griddata", "Voronoi", "ClippedVoronoi", "circumcenter",
            "circumcenter_statuses"]

@@ -313,6 +313,24 @@ class Delaunay:
         shape, out = self._query(xi, lambda loc, rows: loc.nearest(rows, threads))
         return out.reshape(shape)
 
+    def natural_neighbors(self, xi, exact=False, threads=None):
+        """Sibson's natural neighbour coordinates of each query, as compressed rows (the
+        layout of scipy's vertex_neighbor_vertices): for the i-th query of xi flattened to
+        (q, 2), the points indices[indptr[i]:indptr[i + 1]] with weights
+        weights[indptr[i]:indptr[i + 1]] (summing to 1). A query on a point has that point
+        alone (weight 1); on a hull edge, the edge's two ends (linear along it); outside
+        the convex hull, none. The neighbours are decided exactly (the kernel's incircle);
+        the weights are areas of Voronoi polygons computed in doubles, or with exact=True
+        in exact rationals, each weight then the double nearest the exact one. Returns
+        (indptr int64, indices int32, weights float64)."""
+        if self.furthest_site:
+            raise ValueError("natural_neighbors: the coordinates are those of the Delaunay "
+                             "triangulation, not the furthest-site one")
+        threads = default_threads() if threads is None else threads
+        _, arrays = self._query(
+            xi, lambda loc, rows: loc.natural_coordinates(rows, bool(exact), threads))
+        return arrays
+
     def locate(self, xi, order="hilbert", threads=None):
         """Where each query lies, decided exactly (the kernel's orient2d, no tolerance).
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._delaunay import Delaunay
+from ._delaunay import Delaunay, default_threads
 
 
 def _coords(args, what):
@@ -154,19 +154,78 @@ class NearestNDInterpolator(_Interpolator):
         return self.values[nearest]
 
 
+class NaturalNeighborInterpolator(_Interpolator):
+    """Sibson's natural neighbour interpolation, with the interface of
+    scipy.interpolate.LinearNDInterpolator (scipy has no natural neighbour interpolant;
+    CGAL's natural_neighbor_coordinates_2 and MetPy's natural_neighbor_to_points have).
+
+    NaturalNeighborInterpolator(points, values, fill_value=np.nan, rescale=False,
+                                exact=False)
+
+    points      (n, 2) array, or an exidel.Delaunay (reused, not recomputed)
+    values      (n, ...) array of float or complex values at the points
+    fill_value  the value outside the convex hull (default NaN)
+    rescale     scipy's (see LinearNDInterpolator)
+    exact       compute the areas in exact rationals: every value is then the double
+                nearest to the exact interpolant of the given values (complex values: each
+                part)
+    Called as ip(xi) with xi of shape (..., 2), or ip(x, y). Threads: ip(xi, threads=k).
+
+    The interpolant is C1 except at the data points, reproduces linear functions (exactly
+    with exact=True), and equals a point's value on it. The natural neighbours are decided
+    exactly; on a hull edge the value is the linear interpolation along the edge (the limit
+    from inside); outside the hull, fill_value. Without exact=True the Voronoi areas are
+    computed in doubles, relative to the query, with no proven bound (the circumcentre of a
+    thin triangle is far away and its rounding error large); exidel falls back to exact
+    arithmetic for a query where a rounded determinant is not positive or an area negative,
+    so rounded weights are never negative. Delaunay.natural_neighbors gives the
+    coordinates themselves.
+    """
+
+    def __init__(self, points, values, fill_value=np.nan, rescale=False, exact=False):
+        super().__init__(points, values, rescale)
+        if self.tri.furthest_site:
+            raise ValueError("NaturalNeighborInterpolator needs a Delaunay triangulation, not "
+                             "a furthest-site one")
+        self.fill_value = fill_value
+        self.exact = bool(exact)
+
+    def __call__(self, *args, threads=None):
+        xi = self._queries(args)
+        shape = xi.shape[:-1]
+        q = np.ascontiguousarray(xi.reshape(-1, 2))
+        values = self.values.reshape(self.values.shape[0], -1)
+        complex_values = np.iscomplexobj(values)
+        parts = [values.real, values.imag] if complex_values else [values]
+        fill = complex(self.fill_value) if complex_values else self.fill_value
+        fills = [fill.real, fill.imag] if complex_values else [float(fill)]
+        threads = default_threads() if threads is None else threads
+        outs = []
+        for part, part_fill in zip(parts, fills):
+            part = np.ascontiguousarray(part, dtype=np.float64)
+            _, out = self.tri._query(
+                q, lambda loc, rows, part=part, part_fill=part_fill: loc.natural(
+                    rows, part, part_fill, self.exact, threads))
+            outs.append(out)
+        out = outs[0] + 1j * outs[1] if complex_values else outs[0]
+        return out.reshape(shape + self.values.shape[1:])
+
+
 def griddata(points, values, xi, method="linear", fill_value=np.nan, rescale=False):
     """scipy.interpolate.griddata for points of the plane: `method` "linear"
-    (LinearNDInterpolator) or "nearest" (NearestNDInterpolator, which ignores fill_value as
-    scipy does). "cubic" (scipy's Clough-Tocher interpolant) is not in exidel and raises
+    (LinearNDInterpolator), "nearest" (NearestNDInterpolator, which ignores fill_value as
+    scipy does) or exidel's "natural" (NaturalNeighborInterpolator; not in scipy). "cubic" (scipy's Clough-Tocher interpolant) is not in exidel and raises
     NotImplementedError; any other method raises ValueError, as in scipy. `xi` is an array
     of shape (..., 2) or a tuple of x and y arrays."""
     if method == "linear":
         ip = LinearNDInterpolator(points, values, fill_value=fill_value, rescale=rescale)
     elif method == "nearest":
         ip = NearestNDInterpolator(points, values, rescale=rescale)
+    elif method == "natural":
+        ip = NaturalNeighborInterpolator(points, values, fill_value=fill_value, rescale=rescale)
     elif method == "cubic":
         raise NotImplementedError("griddata: method='cubic' (the Clough-Tocher interpolant) "
-                                  "is not in exidel; 'linear' and 'nearest' are")
+                                  "is not in exidel; 'linear', 'nearest' and 'natural' are")
     else:
         raise ValueError(f"Unknown interpolation method {method!r} for 2 dimensional data")
     return ip(xi)

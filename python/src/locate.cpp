@@ -13,6 +13,7 @@
 
 #include "common.hpp"
 #include "exidel/delaunay/locate.hpp"
+#include "exidel/delaunay/natural.hpp"
 
 namespace exidel::python {
 
@@ -131,7 +132,75 @@ public:
         return to_numpy(std::move(result));
     }
 
+    /// Natural neighbour coordinates, row by row: (offsets int64 (q + 1), vertices int32,
+    /// weights float64), or raises.
+    py::tuple natural_coordinates(py::object queries_object, bool exact, unsigned threads) {
+        const Points queries = to_points(queries_object, "xi");
+        const delaunay::NaturalOptions options = natural_options(exact, threads);
+        delaunay::NaturalCoordinates c;
+        std::optional<delaunay::Failure> failure;
+        {
+            py::gil_scoped_release release;
+            failure = std::visit(
+                [&](const auto& l) {
+                    return delaunay::natural_coordinates(*l, queries.span(), c, options);
+                },
+                locator_);
+        }
+        raise(failure);
+        std::vector<std::int64_t> offsets(c.offsets.begin(), c.offsets.end());
+        std::vector<std::int32_t> vertices(c.vertices.begin(), c.vertices.end());
+        return py::make_tuple(to_numpy(std::move(offsets)), to_numpy(std::move(vertices)),
+                              to_numpy(std::move(c.weights)));
+    }
+
+    /// Sibson's interpolant of values (n, c) at every query: (q, c) float64, or raises.
+    py::array_t<double> natural(
+        py::object queries_object,
+        py::array_t<double, py::array::c_style | py::array::forcecast> values, double fill,
+        bool exact, unsigned threads) {
+        const Points queries = to_points(queries_object, "xi");
+        if (values.ndim() != 2 || static_cast<std::size_t>(values.shape(0)) != points_.rows) {
+            throw py::value_error("values: expected shape (" + std::to_string(points_.rows) +
+                                  ", c)");
+        }
+        const auto columns = static_cast<std::size_t>(values.shape(1));
+        py::array_t<double> out(
+            {static_cast<py::ssize_t>(queries.rows), static_cast<py::ssize_t>(columns)});
+        if (columns == 0) return out;
+        const std::span<const double> in(values.data(), static_cast<std::size_t>(values.size()));
+        const std::span<double> written(out.mutable_data(), static_cast<std::size_t>(out.size()));
+        const delaunay::NaturalOptions options = natural_options(exact, threads);
+        std::optional<delaunay::Failure> failure;
+        {
+            py::gil_scoped_release release;
+            failure = std::visit(
+                [&](const auto& l) {
+                    return delaunay::interpolate_natural(*l, in, columns, queries.span(), written,
+                                                         fill, options);
+                },
+                locator_);
+        }
+        raise(failure);
+        return out;
+    }
+
 private:
+    static delaunay::NaturalOptions natural_options(bool exact, unsigned threads) {
+        if (threads == 0) throw py::value_error("threads must be at least 1");
+        delaunay::NaturalOptions options;
+        options.locate.threads = threads;
+        options.arithmetic =
+            exact ? delaunay::NaturalArithmetic::exact : delaunay::NaturalArithmetic::rounded;
+        return options;
+    }
+    static void raise(const std::optional<delaunay::Failure>& failure) {
+        if (failure) {
+            throw std::runtime_error(std::string(delaunay::to_string(failure->kind)) + ": " +
+                                     failure->message);
+        }
+    }
+
     Points points_;
     delaunay::Triangulation tri_;
     AnyLocator locator_;
@@ -148,7 +217,11 @@ void bind_locate(py::module_& m) {
              py::arg("collinear"), py::arg("kernel") = "adaptive")
         .def("locate", &PyLocator::locate, py::arg("xi"), py::arg("order") = "hilbert",
              py::arg("threads") = 1)
-        .def("nearest", &PyLocator::nearest, py::arg("xi"), py::arg("threads") = 1);
+        .def("nearest", &PyLocator::nearest, py::arg("xi"), py::arg("threads") = 1)
+        .def("natural_coordinates", &PyLocator::natural_coordinates, py::arg("xi"),
+             py::arg("exact") = false, py::arg("threads") = 1)
+        .def("natural", &PyLocator::natural, py::arg("xi"), py::arg("values"),
+             py::arg("fill") = 0.0, py::arg("exact") = false, py::arg("threads") = 1);
     m.attr("location_kinds") = py::make_tuple("inside", "on_edge", "on_vertex", "outside");
 }
 
