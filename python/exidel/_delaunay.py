@@ -304,14 +304,35 @@ class Delaunay:
         shape, arrays = self._query(xi, lambda loc, rows: loc.locate(rows, order, threads))
         return (shape, *arrays)
 
-    def nearest(self, xi, threads=None):
+    def nearest(self, xi, k=None, threads=None):
         """The index of the point nearest to each query (int32, the queries' shape), decided
         exactly (the kernel's compare_distance): no point is strictly nearer. Among equally
         near points one is chosen (a repeated point by its first occurrence); -1 when there
-        are no points. A NaN or infinite query raises ValueError naming the row."""
+        are no points. A NaN or infinite query raises ValueError naming the row.
+
+        With k (an int >= 0): the k nearest points of each query, shape (..., k), nearest
+        first, found by walking the triangulation from the nearest point; ties in distance
+        are ordered by index; a repeated point counts once (its first occurrence); -1 past
+        the number of distinct points."""
         threads = default_threads() if threads is None else threads
-        shape, out = self._query(xi, lambda loc, rows: loc.nearest(rows, threads))
-        return out.reshape(shape)
+        if k is None:
+            shape, out = self._query(xi, lambda loc, rows: loc.nearest(rows, threads))
+            return out.reshape(shape)
+        if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or k < 0:
+            raise ValueError(f"k must be an integer >= 0, got {k!r}")
+        shape, out = self._query(xi, lambda loc, rows: loc.nearest_k(rows, int(k), threads))
+        return out.reshape(shape + (int(k),))
+
+    def within_radius(self, xi, r, threads=None):
+        """The points p with |p - x| <= r, decided exactly, for each query x of xi flattened
+        to (q, 2), nearest first (ties by index; a repeated point once, by its first
+        occurrence), as compressed rows: the points of query i are
+        indices[indptr[i]:indptr[i + 1]]. Returns (indptr int64, indices int32). (scipy's
+        cKDTree.query_ball_point answers lists, unsorted unless return_sorted.)"""
+        threads = default_threads() if threads is None else threads
+        r = float(r)
+        _, arrays = self._query(xi, lambda loc, rows: loc.within_radius(rows, r, threads))
+        return arrays
 
     def natural_neighbors(self, xi, exact=False, threads=None):
         """Sibson's natural neighbour coordinates of each query, as compressed rows (the

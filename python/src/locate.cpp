@@ -3,6 +3,7 @@
 // exidel.Delaunay.locate and find_simplex (exidel/_delaunay.py) use it.
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -14,6 +15,7 @@
 #include "common.hpp"
 #include "exidel/delaunay/locate.hpp"
 #include "exidel/delaunay/natural.hpp"
+#include "exidel/delaunay/neighbors.hpp"
 
 namespace exidel::python {
 
@@ -132,6 +134,59 @@ public:
         return to_numpy(std::move(result));
     }
 
+    /// The k nearest points of every query: (q, k) int32, -1 past the distinct points.
+    py::array_t<std::int32_t> nearest_k(py::object queries_object, std::size_t k,
+                                        unsigned threads) {
+        const Points queries = to_points(queries_object, "xi");
+        if (threads == 0) throw py::value_error("threads must be at least 1");
+        delaunay::NeighborRows rows;
+        std::optional<delaunay::Failure> failure;
+        {
+            py::gil_scoped_release release;
+            failure = std::visit(
+                [&](const auto& l) {
+                    return delaunay::nearest_k(*l, queries.span(), k, rows, {.threads = threads});
+                },
+                locator_);
+        }
+        raise(failure);
+        py::array_t<std::int32_t> out(
+            {static_cast<py::ssize_t>(queries.rows), static_cast<py::ssize_t>(k)});
+        std::int32_t* o = out.mutable_data();
+        for (std::size_t i = 0; i < queries.rows; ++i) {
+            for (std::size_t j = 0; j < k; ++j) {
+                const std::size_t at = rows.offsets[i] + j;
+                o[i * k + j] =
+                    at < rows.offsets[i + 1] ? static_cast<std::int32_t>(rows.vertices[at]) : -1;
+            }
+        }
+        return out;
+    }
+
+    /// The points within `radius` of every query: (indptr int64, indices int32).
+    py::tuple within_radius(py::object queries_object, double radius, unsigned threads) {
+        const Points queries = to_points(queries_object, "xi");
+        if (threads == 0) throw py::value_error("threads must be at least 1");
+        if (!(radius >= 0) || !std::isfinite(radius)) {
+            throw py::value_error("r must be finite and not negative");
+        }
+        delaunay::NeighborRows rows;
+        std::optional<delaunay::Failure> failure;
+        {
+            py::gil_scoped_release release;
+            failure = std::visit(
+                [&](const auto& l) {
+                    return delaunay::within_radius(*l, queries.span(), radius, rows,
+                                                   {.threads = threads});
+                },
+                locator_);
+        }
+        raise(failure);
+        std::vector<std::int64_t> offsets(rows.offsets.begin(), rows.offsets.end());
+        std::vector<std::int32_t> vertices(rows.vertices.begin(), rows.vertices.end());
+        return py::make_tuple(to_numpy(std::move(offsets)), to_numpy(std::move(vertices)));
+    }
+
     /// Natural neighbour coordinates, row by row: (offsets int64 (q + 1), vertices int32,
     /// weights float64), or raises.
     py::tuple natural_coordinates(py::object queries_object, bool exact, unsigned threads) {
@@ -218,6 +273,10 @@ void bind_locate(py::module_& m) {
         .def("locate", &PyLocator::locate, py::arg("xi"), py::arg("order") = "hilbert",
              py::arg("threads") = 1)
         .def("nearest", &PyLocator::nearest, py::arg("xi"), py::arg("threads") = 1)
+        .def("nearest_k", &PyLocator::nearest_k, py::arg("xi"), py::arg("k"),
+             py::arg("threads") = 1)
+        .def("within_radius", &PyLocator::within_radius, py::arg("xi"), py::arg("r"),
+             py::arg("threads") = 1)
         .def("natural_coordinates", &PyLocator::natural_coordinates, py::arg("xi"),
              py::arg("exact") = false, py::arg("threads") = 1)
         .def("natural", &PyLocator::natural, py::arg("xi"), py::arg("values"),

@@ -132,6 +132,7 @@ struct LocalMesh {
     std::span<const std::int32_t> halfedges;           // twins, as local half-edges
     std::span<const Point2> points;                    // local vertex -> coordinates
     std::span<const std::uint32_t> input_of_local;     // local vertex -> input index
+    std::span<const std::uint32_t> local_of_input;     // input index -> local, or no_vertex
     std::span<const std::uint32_t> triangle_of_local;  // local triangle -> triangle
     std::span<const std::uint32_t> local_of_triangle;  // triangle -> local triangle
     std::span<const std::int32_t> vertex_edge;         // local vertex -> a half-edge out
@@ -245,8 +246,8 @@ public:
     const K& kernel() const noexcept { return kernel_; }
     /// The walks' copy of the mesh (empty without triangles).
     detail::LocalMesh local_mesh() const noexcept {
-        return {local_triangles_,   local_halfedges_,   local_points_, input_of_local_,
-                triangle_of_local_, local_of_triangle_, vertex_edge_};
+        return {local_triangles_, local_halfedges_,   local_points_,      input_of_local_,
+                local_of_input_,  triangle_of_local_, local_of_triangle_, vertex_edge_};
     }
 
 private:
@@ -275,6 +276,7 @@ private:
     detail::FreshVector<std::int32_t> local_halfedges_;     // twins, as local half-edges
     detail::FreshVector<Point2> local_points_;              // local vertex -> coordinates
     detail::FreshVector<std::uint32_t> input_of_local_;     // local vertex -> input index
+    detail::FreshVector<std::uint32_t> local_of_input_;     // input index -> local (or none)
     detail::FreshVector<std::uint32_t> triangle_of_local_;  // local triangle -> triangle
     detail::FreshVector<std::uint32_t> local_of_triangle_;  // triangle -> local triangle
     // Local vertex -> a local half-edge out of it, the one on the hull for a hull vertex
@@ -299,6 +301,49 @@ inline bool finite(Point2 p) noexcept { return std::isfinite(p.x) && std::isfini
 inline Failure non_finite_query(std::size_t index) {
     return Failure{FailureKind::non_finite_input, index, no_index,
                    "query " + std::to_string(index) + " has a non-finite coordinate"};
+}
+
+}  // namespace detail
+
+namespace detail {
+
+/// The greedy walk to a vertex nearest q (Locator::nearest says why it ends on one): from
+/// the nearest corner of local triangle t, to a strictly nearer neighbour while there is
+/// one. A local vertex, or nothing when the walk does not end in as many steps as there
+/// are vertices (only possible with an inexact kernel).
+template <PredicateKernel K>
+std::optional<std::uint32_t> greedy_nearest(const K& k, const LocalMesh& m, Point2 q,
+                                            std::uint32_t t) {
+    const auto nearer = [&](std::uint32_t a, std::uint32_t b) {
+        return k.compare_distance(q, m.points[a], m.points[b]) == Sign::negative;
+    };
+    const std::size_t base = 3 * std::size_t{t};
+    std::uint32_t v = m.triangles[base];
+    for (std::size_t j = 1; j < 3; ++j) {
+        if (nearer(m.triangles[base + j], v)) v = m.triangles[base + j];
+    }
+    for (std::size_t steps = 0;; ++steps) {
+        if (steps > m.points.size()) return std::nullopt;
+        bool moved = false;
+        const auto first = static_cast<std::size_t>(m.vertex_edge[v]);
+        std::size_t e = first;
+        do {  // every triangle around v, counter-clockwise
+            const std::uint32_t a = m.triangles[next_halfedge(e)];
+            const std::uint32_t b = m.triangles[prev_halfedge(e)];
+            if (nearer(a, v)) {
+                v = a, moved = true;
+                break;
+            }
+            if (nearer(b, v)) {
+                v = b, moved = true;
+                break;
+            }
+            const std::int32_t twin = m.halfedges[prev_halfedge(e)];
+            if (twin < 0) break;
+            e = static_cast<std::size_t>(twin);
+        } while (e != first);
+        if (!moved) return v;
+    }
 }
 
 }  // namespace detail
@@ -357,14 +402,14 @@ Locator<K>::Locator(std::span<const Point2> points, const Triangulation& triangu
     }
     local_triangles_.resize(T.size());
     local_halfedges_.resize(T.size());
-    detail::FreshVector<std::uint32_t> local_of_input(n, no_vertex);
+    local_of_input_.assign(n, no_vertex);
     input_of_local_.reserve(n);
     local_points_.reserve(n);
     for (std::size_t k = 0; k < m; ++k) {
         const std::size_t t = triangle_of_local_[k];
         for (std::size_t j = 0; j < 3; ++j) {
             const std::uint32_t v = T[3 * t + j];
-            std::uint32_t& local = local_of_input[v];
+            std::uint32_t& local = local_of_input_[v];
             if (local == no_vertex) {
                 local = static_cast<std::uint32_t>(input_of_local_.size());
                 input_of_local_.push_back(v);
@@ -603,40 +648,11 @@ std::optional<Failure> Locator<K>::nearest(std::span<const Point2> queries,
                     out[i] = chain[at];
                     continue;
                 }
-                const std::size_t base =
-                    3 *
-                    std::size_t{local_of_triangle_[static_cast<std::uint32_t>(where[i].triangle)]};
-                const auto nearer = [&](std::uint32_t a, std::uint32_t b) {
-                    return kernel_.compare_distance(q, local_points_[a], local_points_[b]) ==
-                           Sign::negative;
-                };
-                std::uint32_t v = local_triangles_[base];
-                for (std::size_t j = 1; j < 3; ++j) {
-                    if (nearer(local_triangles_[base + j], v)) v = local_triangles_[base + j];
-                }
-                for (std::size_t steps = 0;; ++steps) {
-                    if (steps > local_points_.size()) throw exceeded(i);
-                    bool moved = false;
-                    const auto first = static_cast<std::size_t>(vertex_edge_[v]);
-                    std::size_t e = first;
-                    do {  // every triangle around v, counter-clockwise
-                        const std::uint32_t a = local_triangles_[next_halfedge(e)];
-                        const std::uint32_t b = local_triangles_[prev_halfedge(e)];
-                        if (nearer(a, v)) {
-                            v = a, moved = true;
-                            break;
-                        }
-                        if (nearer(b, v)) {
-                            v = b, moved = true;
-                            break;
-                        }
-                        const std::int32_t twin = local_halfedges_[prev_halfedge(e)];
-                        if (twin < 0) break;
-                        e = static_cast<std::size_t>(twin);
-                    } while (e != first);
-                    if (!moved) break;
-                }
-                out[i] = input_of_local_[v];
+                const std::uint32_t local =
+                    local_of_triangle_[static_cast<std::uint32_t>(where[i].triangle)];
+                const auto v = detail::greedy_nearest(kernel_, local_mesh(), q, local);
+                if (!v) throw exceeded(i);
+                out[i] = input_of_local_[*v];
             }
         });
     } catch (FailureError& e) {
