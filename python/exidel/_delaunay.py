@@ -28,7 +28,6 @@ _QHULL_JOGGLE = re.compile(r"QJ(\d+(\.\d*)?|\.\d+)?([eE][-+]?\d+)?$")
 # scipy refuses these with incremental=True (they rescale or add a point once, at the start).
 _QHULL_NOT_INCREMENTAL = ("Qbb", "Qbk", "QBk", "QbB", "Qz")
 _QHULL_WHY = {
-    "Qu": "the furthest-site diagram, which exidel.Voronoi does not compute",
     "QbB": "it scales the input to the unit cube, which changes its Delaunay triangulation",
     "Qbk": "it scales a coordinate of the input, which changes its Delaunay triangulation",
     "QBk": "it scales a coordinate of the input, which changes its Delaunay triangulation",
@@ -189,8 +188,8 @@ class Delaunay:
                exidel never needs to perturb the input, and does not), Qx, Q11, Q12, Pp.
                Qbb and Qz keep their one visible effect, the scale of the lifted
                coordinate (paraboloid_scale, paraboloid_shift). Any other option raises
-               ValueError naming it (QbB would triangulate scaled points, Qu is the
-               furthest-site triangulation, QGn selects facets). None (the default) is
+               ValueError naming it (QbB would triangulate scaled points, QGn selects
+               facets). None (the default) is
                scipy's default: "Qbb Qc Qz Q12", and "Qc" when incremental.
 
     Attributes with scipy's names and meaning:

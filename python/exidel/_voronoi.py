@@ -36,13 +36,20 @@ class Voronoi:
     """The Voronoi diagram of 2D points.
 
     Voronoi(points, kernel="adaptive", algorithm="external", threads=None, *,
-            incremental=False, qhull_options=None)
+            furthest_site=False, incremental=False, qhull_options=None)
 
     Every vertex is the centre of a maximal set of exactly cocircular Delaunay triangles
     (decided by the kernel's in-circle test, never by a tolerance) and its coordinates are
     the doubles nearest to the exact centre. Duplicate points share their twin's cell. A
     centre beyond the largest double raises ValueError; an inexact kernel's failed
     triangulation raises exidel.TriangulationError.
+
+    furthest_site=True (or qhull_options "Qu") is scipy's furthest-site diagram, exact:
+    the dual of Delaunay(points, furthest_site=True), each vertex the correctly rounded
+    centre of its (merged, exactly cocircular) triangles; only the convex hull's corners
+    have regions, each unbounded (regions[i] is [] for every other point, a point inside a
+    hull edge included), entered along -entry_ray and left along exit_ray, the inward
+    normals of the hull edges at the point. `algorithm` does not apply.
 
     incremental and qhull_options are scipy's, as for exidel.Delaunay: the options that
     cannot change an exact diagram (Qbb, Qc, Qz, Qt, QJ, Qx, Q11, Q12, Pp) are accepted,
@@ -74,8 +81,10 @@ class Voronoi:
     ndim = 2
 
     def __init__(self, points, kernel="adaptive", algorithm="external", threads=None, *,
-                 incremental=False, qhull_options=None):
-        self._qhull_options = parse_qhull_options(qhull_options, incremental, "Qbb Qc Qz", "Qc")
+                 furthest_site=False, incremental=False, qhull_options=None):
+        self._qhull_options = parse_qhull_options(qhull_options, incremental, "Qbb Qc Qz", "Qc",
+                                                  furthest=True)
+        self.furthest_site = bool(furthest_site) or "Qu" in self._qhull_options
         self._settings = (kernel, algorithm, threads)
         self._incremental = bool(incremental)
         self._build(np.ascontiguousarray(points, dtype=np.float64))
@@ -83,7 +92,7 @@ class Voronoi:
     def _build(self, points):
         kernel, algorithm, threads = self._settings
         threads = default_threads() if threads is None else threads
-        data = _core.VoronoiData(points, kernel, algorithm, threads)
+        data = _core.VoronoiData(points, kernel, algorithm, threads, self.furthest_site)
         failure = data.failure()
         if failure is not None:
             raise TriangulationError(*failure)
@@ -184,14 +193,19 @@ class Voronoi:
 
     def clip(self, xmin, ymin, xmax, ymax):
         """The diagram inside the box [xmin, xmax] x [ymin, ymax] (exact rationals, every
-        new point correctly rounded): a ClippedVoronoi."""
+        new point correctly rounded): a ClippedVoronoi. Not for the furthest-site diagram
+        (ValueError)."""
+        if self.furthest_site:
+            raise ValueError("clip: the clipped diagram is the nearest-site one; this is the "
+                             "furthest-site diagram")
         try:
             return ClippedVoronoi(self._data.clip(float(xmin), float(ymin), float(xmax), float(ymax)))
         except RuntimeError as error:  # std::invalid_argument: the box
             raise ValueError(str(error)) from None
 
     def __repr__(self):
-        return (f"<exidel.Voronoi: {self.npoints} sites, {len(self.vertices)} vertices, "
+        kind = "furthest-site " if self.furthest_site else ""
+        return (f"<exidel.Voronoi: {kind}{self.npoints} sites, {len(self.vertices)} vertices, "
                 f"{sum(map(bool, self.unbounded))} unbounded cells>")
 
 

@@ -13,6 +13,7 @@
 #include <pybind11/stl.h>
 
 #include "common.hpp"
+#include "exidel/delaunay/furthest.hpp"
 #include "exidel/delaunay/triangulate.hpp"
 #include "exidel/delaunay/voronoi.hpp"
 #include "exidel/predicates/construct.hpp"
@@ -45,7 +46,7 @@ void cells_into(const delaunay::VoronoiCells& c, py::dict& d) {
 class VoronoiData {
 public:
     VoronoiData(py::object points_object, const std::string& kernel_name,
-                const std::string& algorithm, unsigned threads) {
+                const std::string& algorithm, unsigned threads, bool furthest) {
         const Points p = to_points(points_object, "points");
         if (p.single) throw py::value_error("points: expected shape (n, 2), got (2,)");
         if (threads == 0) throw py::value_error("threads must be at least 1");
@@ -58,14 +59,22 @@ public:
             py::gil_scoped_release release;
             std::visit(
                 [&](const auto& k) {
-                    delaunay::Result r = delaunay::triangulate(points_, k, options);
-                    if (!r.ok()) {
+                    if (furthest) {
+                        delaunay::FurthestResult r =
+                            delaunay::furthest_site_triangulation(points_, k);
                         failure_ = r.failure;
-                        return;
+                        triangulation_ = std::move(r.triangulation);
+                    } else {
+                        delaunay::Result r = delaunay::triangulate(points_, k, options);
+                        failure_ = r.failure;
+                        triangulation_ = std::move(r.triangulation);
                     }
-                    triangulation_ = std::move(r.triangulation);
+                    if (failure_) return;
                     try {
-                        diagram_ = delaunay::voronoi(points_, triangulation_, k, threads);
+                        diagram_ = furthest
+                                       ? delaunay::furthest_site_voronoi(points_, triangulation_, k,
+                                                                         threads)
+                                       : delaunay::voronoi(points_, triangulation_, k, threads);
                     } catch (const delaunay::VoronoiError& e) {
                         error = e.what();
                     }
@@ -191,9 +200,9 @@ py::tuple circumcenter_rows(py::object a_object, py::object b_object, py::object
 
 void bind_voronoi(py::module_& m) {
     py::class_<VoronoiData>(m, "VoronoiData")
-        .def(py::init<py::object, const std::string&, const std::string&, unsigned>(),
+        .def(py::init<py::object, const std::string&, const std::string&, unsigned, bool>(),
              py::arg("points"), py::arg("kernel") = "adaptive", py::arg("algorithm") = "external",
-             py::arg("threads") = 1)
+             py::arg("threads") = 1, py::arg("furthest") = false)
         .def("failure", &VoronoiData::failure)
         .def("arrays", &VoronoiData::arrays)
         .def("clip", &VoronoiData::clip, py::arg("xmin"), py::arg("ymin"), py::arg("xmax"),

@@ -166,3 +166,61 @@ def test_list_attributes_are_lists_of_ints_built_once():
     assert all(len(s) >= 3 for s in v.vertex_sites)
     c = v.clip(0, 0, 1, 1)
     assert all(type(i) is int for r in c.regions for i in r)
+
+
+def same_cycle(a, b):
+    """Whether the lists are the same cycle (a rotation of each other)."""
+    return len(a) == len(b) and any(a == b[k:] + b[:k] for k in range(len(b)))
+
+
+def test_furthest_site_matches_scipy(rng):
+    pts = rng.random((200, 2))
+    ours = exidel.Voronoi(pts, furthest_site=True)
+    theirs = scipy.spatial.Voronoi(pts, furthest_site=True)
+    assert ours.furthest_site and "furthest-site" in repr(ours)
+    assert len(ours.vertices) == len(theirs.vertices)
+    # The same vertices (matched by nearest), each the correctly rounded centre of its
+    # furthest-site triangles.
+    match = [int(np.argmin(np.hypot(*(theirs.vertices - v).T))) for v in ours.vertices]
+    assert sorted(match) == list(range(len(match)))
+    np.testing.assert_allclose(ours.vertices, theirs.vertices[match], rtol=0, atol=1e-9)
+    for t in range(len(ours.simplices)):
+        x, y = exact_centre(*pts[ours.simplices[t]])
+        vx, vy = ours.vertices[ours.vertex_of_triangle[t]]
+        assert nearest(vx, x) and nearest(vy, y)
+    ridge = lambda r: frozenset(r)  # noqa: E731
+    assert {ridge(r) for r in ours.ridge_points.tolist()} == \
+        {ridge(r) for r in theirs.ridge_points.tolist()}
+    theirs_ridges = {ridge(p): sorted(v) for p, v in zip(theirs.ridge_points.tolist(),
+                                                          theirs.ridge_vertices)}
+    for p, v in zip(ours.ridge_points.tolist(), ours.ridge_vertices):
+        assert sorted(-1 if w < 0 else match[w] for w in v) == theirs_ridges[ridge(p)]
+    # Regions: the hull's corners only, unbounded, the same cycle of vertices (exidel's
+    # counter-clockwise with -1 last; qhull's in its own direction).
+    hull = set(scipy.spatial.ConvexHull(pts).vertices.tolist())
+    for i in range(len(pts)):
+        mine = ours.regions[ours.point_region[i]]
+        other = theirs.regions[theirs.point_region[i]]
+        assert bool(mine) == (i in hull) == bool(other)
+        assert ours.unbounded[i] == (i in hull)
+        if mine:
+            assert mine[-1] == -1
+            mapped = [-1 if w < 0 else match[w] for w in mine]
+            assert same_cycle(mapped, other) or same_cycle(mapped[::-1], other)
+
+
+def test_furthest_site_degenerate_inputs():
+    # The corners of a rectangle (cocircular): one vertex, four regions; an interior point
+    # and a point inside an edge have none. Qu means furthest_site=True.
+    pts = np.array([[0, 0], [4, 0], [4, 3], [0, 3], [1, 1], [2, 0], [4, 3]], dtype=float)
+    v = exidel.Voronoi(pts, qhull_options="Qu")
+    assert v.furthest_site
+    np.testing.assert_array_equal(v.vertices, [[2, 1.5]])
+    assert v.regions == [[0, -1], [0, -1], [0, -1], [0, -1], [], [], [0, -1]]
+    assert sorted(map(sorted, v.ridge_points.tolist())) == [[0, 1], [0, 3], [1, 2], [2, 3]]
+    with pytest.raises(ValueError, match="furthest"):
+        v.clip(0, 0, 1, 1)
+    # Collinear points: no vertices; the two ends have regions.
+    line = exidel.Voronoi(np.array([[0, 0], [1, 1], [3, 3]], dtype=float), furthest_site=True)
+    assert line.collinear and len(line.vertices) == 0
+    assert line.regions == [[-1], [], [-1]]

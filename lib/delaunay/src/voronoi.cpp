@@ -330,5 +330,56 @@ VoronoiDiagram collinear_voronoi(std::span<const Point2> points, const Triangula
     return d;
 }
 
+void to_furthest(VoronoiDiagram& d, std::span<const Point2> points, const Triangulation& t) {
+    const std::size_t n = d.unbounded.size();
+    if (d.collinear) {
+        // Only the ends of the line (the lexicographically first and last points, first
+        // occurrences) are extreme; every other site's region is empty.
+        d.chain.clear();
+        if (n > 0) {
+            const auto before = [&](std::uint32_t a, std::uint32_t b) {
+                return points[a].x < points[b].x ||
+                       (points[a].x == points[b].x && points[a].y < points[b].y);
+            };
+            std::uint32_t lo = 0, hi = 0;
+            for (std::uint32_t i = 1; i < n; ++i) {
+                if (before(i, lo)) lo = i;
+                if (before(hi, i)) hi = i;
+            }
+            d.chain.push_back(t.vertex_of_input[lo]);
+            if (before(lo, hi)) d.chain.push_back(t.vertex_of_input[hi]);
+        }
+        std::fill(d.unbounded.begin(), d.unbounded.end(), std::uint8_t{0});
+        for (const std::uint32_t s : d.chain) d.unbounded[s] = 1;
+        for (std::size_t i = 0; i < n; ++i) d.unbounded[i] = d.unbounded[t.vertex_of_input[i]];
+        return;
+    }
+    std::vector<std::uint8_t> extreme(n, 0);
+    for (const std::uint32_t v : t.triangles) extreme[v] = 1;
+    std::vector<std::uint32_t> cells;
+    std::vector<std::uint32_t> offsets(n + 1, 0);
+    cells.reserve(d.cell_vertices.size());
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint32_t s = t.vertex_of_input[i];
+        if (extreme[s]) {
+            // The walk around the site in the triangulation meets the region's vertices
+            // counter-clockwise, from the hull edge leaving the site to the one entering
+            // it, as for the nearest-site diagram; the rays are the same edges' normals
+            // turned inward.
+            const auto cell = d.cell(i);
+            cells.insert(cells.end(), cell.begin(), cell.end());
+            d.entry_ray[i] = {-d.entry_ray[i].x, -d.entry_ray[i].y};
+            d.exit_ray[i] = {-d.exit_ray[i].x, -d.exit_ray[i].y};
+            d.unbounded[i] = 1;
+        } else {
+            d.entry_ray[i] = d.exit_ray[i] = Point2{0, 0};
+            d.unbounded[i] = 0;
+        }
+        offsets[i + 1] = static_cast<std::uint32_t>(cells.size());
+    }
+    d.cell_vertices = std::move(cells);
+    d.cell_offsets = std::move(offsets);
+}
+
 }  // namespace detail
 }  // namespace exidel::delaunay

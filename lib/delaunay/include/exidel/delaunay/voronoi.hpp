@@ -158,6 +158,10 @@ private:
 
 VoronoiDiagram collinear_voronoi(std::span<const Point2> points, const Triangulation& t);
 
+/// Turns the dual of a furthest-site triangulation `t`, built as voronoi() builds the
+/// Delaunay one, into the furthest-site diagram (furthest_site_voronoi below).
+void to_furthest(VoronoiDiagram& d, std::span<const Point2> points, const Triangulation& t);
+
 }  // namespace detail
 
 /// The Voronoi diagram of `points` from their Delaunay triangulation `t` (a successful
@@ -179,6 +183,27 @@ VoronoiDiagram voronoi(std::span<const Point2> points, const Triangulation& t, c
         if (kernel.incircle(q[0], q[1], q[2], q[3]) == Sign::zero) builder.merge(e);
     }
     return std::move(builder).finish(tests);
+}
+
+/// The furthest-site Voronoi diagram of `points` from their furthest-site triangulation
+/// `t` (furthest_site_triangulation of the same points): the region of a site is where
+/// it is the furthest site. Its vertices are the correctly rounded centres of the
+/// triangles of `t`, merged where cocircular (kernel.incircle(...) == 0), as voronoi()'s;
+/// the sites of a vertex are every site exactly at the largest distance. Only the extreme
+/// points (the corners of the convex hull) have regions, each unbounded: cell(i) lists
+/// its vertices counter-clockwise, entered from infinity along -entry_ray[i] and left
+/// along exit_ray[i], the inward normals of the hull edges at the site (the region lies
+/// across the hull from its site). Every other site, a point inside a hull edge
+/// included, has an empty region (cell(i) empty, unbounded[i] false). With fewer than
+/// three extreme points (collinear): `chain` holds the one or two extreme points (the
+/// lexicographically first and last), and the region of each is the half-plane on the
+/// other's side of their bisector (the whole plane for one point).
+template <PredicateKernel K>
+VoronoiDiagram furthest_site_voronoi(std::span<const Point2> points, const Triangulation& t,
+                                     const K& kernel, unsigned threads = 1) {
+    VoronoiDiagram d = voronoi(points, t, kernel, threads);
+    detail::to_furthest(d, points, t);
+    return d;
 }
 
 }  // namespace exidel::delaunay
