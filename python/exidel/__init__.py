@@ -19,10 +19,11 @@ from ._delaunay import Certificate, Delaunay, Finding, Location, TriangulationEr
 from ._interpolate import (LinearNDInterpolator, NaturalNeighborInterpolator,
                            NearestNDInterpolator, griddata)
 from ._voronoi import ClippedVoronoi, Voronoi
+from ._mutable import MutableTriangulation
 from ._core import circumcenter, circumcenter_statuses
 
 __all__ = ["__version__", "algorithms", "build_info", "kernel_spellings", "orient2d",
            "incircle", "incircle_cosine", "compare_distance", "orient3d", "insphere", "Delaunay", "TriangulationError",
            "certify", "Certificate", "Finding", "Location", "location_kinds", "LinearNDInterpolator",
-           "NearestNDInterpolator", "NaturalNeighborInterpolator", "griddata", "Voronoi", "ClippedVoronoi", "circumcenter",
+           "NearestNDInterpolator", "NaturalNeighborInterpolator", "griddata", "MutableTriangulation", "Voronoi", "ClippedVoronoi", "circumcenter",
            "circumcenter_statuses"]

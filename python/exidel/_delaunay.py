@@ -255,6 +255,20 @@ class Delaunay:
         if counters and "counters" in r:
             self.stats["counters"] = r["counters"]
 
+    @classmethod
+    def _from_arrays(cls, points, r, kernel):
+        """A Delaunay of `points` with triangulate()'s (or a snapshot's) arrays r, not
+        recomputed (MutableTriangulation.delaunay)."""
+        self = cls.__new__(cls)
+        self._qhull_options = parse_qhull_options(None, False, "Qbb Qc Qz Q12", "Qc")
+        self.furthest_site = False
+        self._settings = (kernel, "external", "determinant", "auto", None, False)
+        self._incremental = False
+        self.kernel = _core.kernel_name(kernel)
+        self._mutable = None
+        self._adopt(points, r)
+        return self
+
     def _adopt(self, points, r):
         """points and the arrays of r (triangulate's or a snapshot's) as the attributes."""
         self.points = points

@@ -73,3 +73,33 @@ def test_copies_of_a_point_and_bad_ids():
     with pytest.raises(ValueError, match="not finite"):
         m.insert([[np.nan, 0.0]])
     assert len(m) == 4
+
+
+def test_public_class_inserts_removes_and_answers_queries():
+    rng = np.random.default_rng(21)
+    pts = rng.random((300, 2))
+    m = exidel.MutableTriangulation(pts[:100])
+    assert len(m) == 100 and "100 live points" in repr(m)
+    assert m.insert(pts[100]) == 100  # one point: an int
+    np.testing.assert_array_equal(m.insert(pts[101:]), np.arange(101, 300))
+    m.remove([5, 7])
+    m.remove(9)
+    keep = np.setdiff1d(np.arange(300), [5, 7, 9])
+    np.testing.assert_array_equal(m.ids, keep)
+    np.testing.assert_array_equal(m.points, pts[keep])
+    tri = m.delaunay()
+    assert isinstance(tri, exidel.Delaunay) and tri.npoints == len(keep)
+    assert exidel.certify(tri.points, tri).ok
+    theirs = scipy.spatial.Delaunay(pts[keep])
+    assert triangle_set(tri.simplices) == triangle_set(theirs.simplices)
+    xi = rng.random((50, 2))
+    np.testing.assert_array_equal(tri.find_simplex(xi) >= 0, theirs.find_simplex(xi) >= 0)
+    np.testing.assert_array_equal(keep[tri.nearest(xi)],
+                                  keep[scipy.spatial.cKDTree(pts[keep]).query(xi)[1]])
+    with pytest.raises(IndexError):
+        m.remove(5)
+    with pytest.raises(ValueError):
+        m.insert([np.nan, 0.5])
+    with pytest.raises(TypeError):
+        m.remove([1.5])
+    assert len(exidel.MutableTriangulation()) == 0
