@@ -32,7 +32,7 @@
 //   exact    exact rationals (Boost.Multiprecision over GMP): each weight is the double
 //            nearest to the exact weight, and each interpolated value the double nearest
 //            to the exact sum_j w_j f_j of the given values (not a sum of rounded terms).
-//            Tens of times slower.
+//            About 200 times slower (docs/benchmarks.md#natural-neighbour-interpolation).
 #pragma once
 
 #include <algorithm>
