@@ -167,6 +167,35 @@ TEST(Natural, LinearPrecisionIsExact) {
     }
 }
 
+TEST(Natural, LargeCavityOfANearlyCircularPolygon) {
+    // 300 points near one circle: every triangle's circumcircle holds the centre, so the
+    // cavity is the whole triangulation (past the linear search, into the hash map), and
+    // every point is a natural neighbour of the centre.
+    std::vector<Point2> points;
+    for (int i = 0; i < 300; ++i) {
+        const double a = 2 * 3.14159265358979 * i / 300;
+        points.push_back({std::cos(a), std::sin(a)});
+    }
+    const auto t = delaunay::triangulate(points, AdaptiveKernel{}).triangulation;
+    Locator<AdaptiveKernel> locator(points, t);
+    const std::vector<Point2> centre{{0, 0}, {0.01, -0.02}};
+    for (const auto arithmetic : {NaturalArithmetic::rounded, NaturalArithmetic::exact}) {
+        NaturalCoordinates c;
+        ASSERT_FALSE(delaunay::natural_coordinates(locator, centre, c, {.arithmetic = arithmetic}));
+        ASSERT_EQ(c.offsets[1], 300u);
+        double sx = 0, sy = 0, sum = 0;
+        for (std::size_t j = 0; j < c.offsets[1]; ++j) {
+            EXPECT_GE(c.weights[j], 0);
+            sum += c.weights[j];
+            sx += c.weights[j] * points[c.vertices[j]].x;
+            sy += c.weights[j] * points[c.vertices[j]].y;
+        }
+        EXPECT_NEAR(sum, 1, 1e-12);
+        EXPECT_NEAR(sx, 0, 1e-12);
+        EXPECT_NEAR(sy, 0, 1e-12);
+    }
+}
+
 TEST(Natural, VerticesHullEdgesOutsideAndCollinearInput) {
     const std::vector<Point2> square{{0, 0}, {4, 0}, {4, 4}, {0, 4}, {1, 1}};
     const auto t = delaunay::triangulate(square, AdaptiveKernel{}).triangulation;
