@@ -477,7 +477,15 @@ std::uint32_t MutableTriangulation<K>::insert_at(Point2 p, std::int32_t start) {
             fail(FailureKind::hull_walk_exceeded, id, "the point sees every hull edge");
         }
         ring_.clear();
-        for (std::uint32_t x = first; x != last; x = mesh_.hull_next[x]) ring_.push_back(x);
+        for (std::uint32_t x = first; x != last; x = mesh_.hull_next[x]) {
+            // An inexact kernel can leave a hull cycle that does not lead from first to
+            // last (fuzz corpus: double_hull_cycle_misses_last.bin ran out of memory here).
+            if (ring_.size() > mesh_.hull_size || x == detail::dead) {
+                fail(FailureKind::update_inconsistent, id,
+                     "the hull cycle does not lead from the first visible edge to the last");
+            }
+            ring_.push_back(x);
+        }
         ring_.push_back(last);
         std::int32_t pending = -1;  // p -> x_j of the previous triangle
         for (std::size_t j = 0; j + 1 < ring_.size(); ++j) {
