@@ -17,6 +17,7 @@
 #include "common.hpp"
 #include "exidel/delaunay/algorithms.hpp"
 #include "exidel/delaunay/triangulate.hpp"
+#include "exidel/delaunay/furthest.hpp"
 #include "exidel/delaunay/voronoi.hpp"
 #include "exidel/io/number.hpp"
 #include "exidel/io/points.hpp"
@@ -32,7 +33,7 @@ namespace {
 constexpr std::string_view voronoi_help_head =
     R"(usage: exidel voronoi [-i FILE] [-o FILE] [--kernel NAME] [--algorithm NAME]
                       [--format json|svg|geojson|wkt]
-                      [--clip XMIN YMIN XMAX YMAX | --unclipped]
+                      [--clip XMIN YMIN XMAX YMAX | --unclipped [--furthest-site]]
                       [--input-format xy|json|node|f64|geojson] [--columns X,Y]
                       [--threads N] [--stats] [--quiet] [FILE]
 
@@ -44,7 +45,11 @@ give one vertex, not several a rounding apart; its coordinates are the doubles
 nearest to the exact centre. The diagram is clipped to a box (in exact rationals),
 so that every cell is a polygon: by default the sites' bounding box widened by 10%
 of its larger side on every side (1 unit for a single point), or --clip's box;
---unclipped writes the whole diagram instead (json and svg only).
+--unclipped writes the whole diagram instead (json and svg only). --furthest-site
+(with --unclipped) computes the furthest-site diagram instead (scipy's and qhull's
+furthest_site): the dual of the furthest-site triangulation, where the region of a point
+is where it is the furthest; only the corners of the convex hull have regions, each
+unbounded, its rays the inward normals of the hull edges at the corner.
 
 )";
 
@@ -107,6 +112,7 @@ Options:
                           four finite numbers with XMIN < XMAX and YMIN < YMAX
                           (decimal or hex floats)
       --unclipped         the whole diagram, unbounded cells included (json, svg)
+      --furthest-site     the furthest-site diagram (with --unclipped)
       --input-format FMT  xy|json|node|f64|geojson
       --columns X,Y       xy input: the fields holding x and y, by number from 1
                           ("3,4") or by header name ("lon,lat")
@@ -145,6 +151,7 @@ struct Options : PointCommand {
     std::optional<io::VoronoiFormat> format;
     std::optional<delaunay::Box> clip;
     bool unclipped = false;
+    bool furthest = false;  // the furthest-site diagram
 };
 
 // --clip's four words as a box: finite numbers with xmin < xmax and ymin < ymax.
@@ -216,6 +223,32 @@ void print_stats(std::ostream& err, std::size_t points, const Triangulated& t,
     err << stats_line(stats);
 }
 
+/// --furthest-site: the furthest-site triangulation (furthest.hpp), timed as the run's
+/// triangulation step.
+Triangulated furthest_triangulation(const AnyKernel& kernel, std::span<const Point2> points,
+                                    PointRun& steps) {
+    steps.progress.phase("triangulating " + std::to_string(points.size()) +
+                         " points (furthest site)");
+    Triangulated t;
+    std::visit(
+        [&](const auto& k) {
+            t.kernel_name = k.name();
+            t.exact_kernel = std::decay_t<decltype(k)>::is_exact;
+            const Clock::time_point start = Clock::now();
+            delaunay::FurthestResult r = delaunay::furthest_site_triangulation(points, k);
+            t.result.triangulation = std::move(r.triangulation);
+            t.result.failure = std::move(r.failure);
+            t.ms = ms_since(start);
+        },
+        kernel);
+    steps.times.triangulate = t.ms;
+    if (!t.result.ok()) {
+        steps.progress.stop();
+        print_triangulation_failure(std::cerr, t);
+    }
+    return t;
+}
+
 int run(const Options& o, const CommandLine& cli) {
     const Clock::time_point run_start = Clock::now();
     std::string error;
@@ -226,6 +259,11 @@ int run(const Options& o, const CommandLine& cli) {
                       ".json .svg .geojson .wkt", error);
     if (!format) return cli.usage_error(error);
     if (o.unclipped && o.clip) return cli.usage_error("--clip and --unclipped exclude each other");
+    if (o.furthest && !o.unclipped) {
+        return cli.usage_error(
+            "--furthest-site writes the whole diagram: give --unclipped (clipping is for the "
+            "nearest-site diagram)");
+    }
     if (o.unclipped && !io::holds_unbounded_cells(*format)) {
         return cli.usage_error("--unclipped: the " + std::string(io::to_string(*format)) +
                                " format holds polygons, not unbounded cells (json or svg)");
@@ -243,7 +281,9 @@ int run(const Options& o, const CommandLine& cli) {
 
     const delaunay::Options options =
         delaunay::Options{}.with_algorithm(o.algorithm).with_threads(o.threads);
-    const Triangulated triangulated = steps.triangulate(*kernel, points, options, false);
+    const Triangulated triangulated = o.furthest
+                                          ? furthest_triangulation(*kernel, points, steps)
+                                          : steps.triangulate(*kernel, points, options, false);
     const delaunay::Triangulation& tri = triangulated.result.triangulation;
     delaunay::VoronoiDiagram diagram;
     std::optional<delaunay::ClippedVoronoi> clipped;
@@ -265,7 +305,12 @@ int run(const Options& o, const CommandLine& cli) {
     steps.progress.phase("computing the Voronoi diagram");
     const Clock::time_point voronoi_start = Clock::now();
     try {
-        std::visit([&](const auto& k) { diagram = delaunay::voronoi(points, tri, k); }, *kernel);
+        std::visit(
+            [&](const auto& k) {
+                diagram = o.furthest ? delaunay::furthest_site_voronoi(points, tri, k)
+                                     : delaunay::voronoi(points, tri, k);
+            },
+            *kernel);
     } catch (const delaunay::VoronoiError& e) {
         steps.progress.stop();
         failure = Failure{"voronoi", std::string(to_string(e.status())), e.what()};
@@ -295,7 +340,10 @@ int run(const Options& o, const CommandLine& cli) {
         }
     });
     if (!written) return finish(exit_failure);
-    if (!o.quiet && diagram.collinear) {
+    if (!o.quiet && diagram.collinear && o.furthest) {
+        std::cerr << "exidel: note: no Voronoi vertices: fewer than three extreme points; the "
+                     "ends of the line have the half-planes of their bisector\n";
+    } else if (!o.quiet && diagram.collinear) {
         const std::size_t distinct = points.size() - tri.duplicates.size();
         std::cerr << "exidel: note: no Voronoi vertices: ";
         if (distinct == 0) {
@@ -326,6 +374,7 @@ int voronoi_command(std::span<const std::string_view> args) {
            "--clip", [&](const std::vector<std::string>& words) { o.clip = parse_box(words); })
         ->expected(4);
     app.add_flag("--unclipped", o.unclipped);
+    app.add_flag("--furthest-site", o.furthest);
     o.input.add_format_options(app);
     o.add_report_options(app);
     if (const std::optional<int> status = o.parse(cli, args)) return *status;

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "exidel/delaunay/triangulate.hpp"
+#include "exidel/delaunay/furthest.hpp"
 #include "exidel/delaunay/voronoi.hpp"
 #include "exidel/io/points.hpp"
 #include "exidel/io/voronoi.hpp"
@@ -113,6 +114,29 @@ TEST(ExidelVoronoi, CocircularLatticeIsOneVertexWithEverySite) {
     ASSERT_EQ(s.status, 0) << s.err;
     expect_voronoi_json(s.out, library(square).diagram);
     EXPECT_FALSE(nlohmann::json::parse(s.out)["unbounded"][4].get<bool>());
+}
+
+// --furthest-site: the library's furthest-site diagram, written unclipped; clipping is an
+// error.
+TEST(ExidelVoronoi, FurthestSiteIsTheLibrarysDiagram) {
+    std::vector<Point2> points;
+    for (int i = 0; i < 40; ++i)
+        points.push_back(
+            {std::ldexp(double((i * 37) % 41), -3), std::ldexp(double((i * 11) % 29), -2)});
+    points.push_back(points[3]);  // a duplicate of a point
+    const auto t = delaunay::furthest_site_triangulation(points, AdaptiveKernel{});
+    ASSERT_TRUE(t.ok());
+    const auto d = delaunay::furthest_site_voronoi(points, t.triangulation, AdaptiveKernel{});
+    const RunResult r = run("-q --unclipped --furthest-site", xy_text(points));
+    ASSERT_EQ(r.status, 0) << r.err;
+    expect_voronoi_json(r.out, d);
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    std::size_t regions = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) regions += !j["cells"][i].empty();
+    EXPECT_EQ(regions, t.triangulation.hull.size() + (j["cells"][3].empty() ? 0 : 1));
+    const RunResult clipped = run("-q --furthest-site", xy_text(points));
+    EXPECT_EQ(clipped.status, 2);
+    EXPECT_NE(clipped.err.find("--unclipped"), std::string::npos) << clipped.err;
 }
 
 // Negative zero (the centre of (-3, 0), (2, 0) in units of the smallest subnormal and
