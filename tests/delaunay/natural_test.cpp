@@ -60,12 +60,18 @@ std::optional<std::map<std::uint32_t, FT>> cgal_coordinates(const ExactDT& dt, P
     return out;
 }
 
-/// w is a double nearest to the exact x.
+/// w is a double nearest to the exact x. Compared in GMP rationals (CGAL::exact), not in
+/// Lazy_exact_nt, whose interval filters gave wrong comparisons in the sanitizer build.
 bool nearest_double(double w, const FT& x) {
-    const FT d = CGAL::abs(FT(w) - x);
+    const auto exact = CGAL::exact(x);
+    using Q = std::decay_t<decltype(exact)>;
+    const auto distance = [&](double v) {
+        Q d = Q(v) - exact;
+        return d < 0 ? Q(-d) : d;
+    };
     const double up = std::nextafter(w, std::numeric_limits<double>::infinity());
     const double down = std::nextafter(w, -std::numeric_limits<double>::infinity());
-    return d <= CGAL::abs(FT(up) - x) && d <= CGAL::abs(FT(down) - x);
+    return distance(w) <= distance(up) && distance(w) <= distance(down);
 }
 
 NaturalCoordinates coordinates(const Locator<AdaptiveKernel>& locator,
