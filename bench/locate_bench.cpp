@@ -97,6 +97,24 @@ char cgal_letter(DT::Locate_type lt) {
     }
 }
 
+// CGAL sorts points, not indices: (point, index) pairs sorted through a property map, so
+// that answers are recorded by index (the sort is timed, the pairing is not).
+using IndexedPoint = std::pair<Epick::Point_2, std::uint32_t>;
+
+std::vector<IndexedPoint> indexed(const std::vector<Point2>& queries) {
+    std::vector<IndexedPoint> out;
+    out.reserve(queries.size());
+    for (std::uint32_t i = 0; i < queries.size(); ++i)
+        out.emplace_back(Epick::Point_2(queries[i].x, queries[i].y), i);
+    return out;
+}
+
+void hilbert_sort(std::vector<IndexedPoint>& points) {
+    using Traits =
+        CGAL::Spatial_sort_traits_adapter_2<Epick, CGAL::First_of_pair_property_map<IndexedPoint>>;
+    CGAL::hilbert_sort(points.begin(), points.end(), Traits());
+}
+
 /// Natural neighbour interpolation, both sides, reps interleaved; returns main's status.
 int natural(const Input& in, const delaunay::Triangulation& t, int reps, const std::string& input) {
     using Vb = CGAL::Triangulation_vertex_base_with_info_2<double, Epick>;
@@ -124,14 +142,9 @@ int natural(const Input& in, const delaunay::Triangulation& t, int reps, const s
             ours_ms.push_back(ms(t1, Clock::now()));
         }
         {
-            std::vector<std::pair<Epick::Point_2, std::uint32_t>> cq;
-            cq.reserve(in.queries.size());
-            for (std::uint32_t i = 0; i < in.queries.size(); ++i)
-                cq.emplace_back(Epick::Point_2(in.queries[i].x, in.queries[i].y), i);
+            std::vector<IndexedPoint> cq = indexed(in.queries);
             const auto t0 = Clock::now();
-            using Traits = CGAL::Spatial_sort_traits_adapter_2<
-                Epick, CGAL::First_of_pair_property_map<std::pair<Epick::Point_2, std::uint32_t>>>;
-            CGAL::hilbert_sort(cq.begin(), cq.end(), Traits());
+            hilbert_sort(cq);
             using Coordinate = std::pair<VDT::Vertex_handle, double>;
             std::vector<Coordinate> coords;
             VDT::Face_handle hint;
@@ -224,16 +237,9 @@ int main(int argc, char** argv) {
             ours_ms.push_back(ms(t1, t2));
         }
         {
-            // CGAL sorts points, not indices: sort (point, index) pairs with a property map
-            // would cost the same; the kinds are recorded through the index.
-            std::vector<std::pair<Epick::Point_2, std::uint32_t>> cq;
-            cq.reserve(in.queries.size());
-            for (std::uint32_t i = 0; i < in.queries.size(); ++i)
-                cq.emplace_back(Epick::Point_2(in.queries[i].x, in.queries[i].y), i);
+            std::vector<IndexedPoint> cq = indexed(in.queries);
             const auto t0 = Clock::now();
-            using Traits = CGAL::Spatial_sort_traits_adapter_2<
-                Epick, CGAL::First_of_pair_property_map<std::pair<Epick::Point_2, std::uint32_t>>>;
-            CGAL::hilbert_sort(cq.begin(), cq.end(), Traits());
+            hilbert_sort(cq);
             DT::Face_handle hint;
             DT::Locate_type lt;
             int li = 0;

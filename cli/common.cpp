@@ -152,23 +152,11 @@ bool PointCommand::open_output(std::optional<PendingFile>& file) const {
 
 Triangulated triangulate_points(const AnyKernel& kernel, std::span<const Point2> points,
                                 const delaunay::Options& options, bool counters) {
-    Triangulated t;
-    std::visit(
-        [&](const auto& k) {
-            t.kernel_name = k.name();
-            t.exact_kernel = std::decay_t<decltype(k)>::is_exact;
-            const Clock::time_point start = Clock::now();
-            if (counters) {
-                t.result =
-                    delaunay::triangulate<delaunay::Instrumentation::counters>(points, k, options);
-            } else {
-                t.result =
-                    delaunay::triangulate<delaunay::Instrumentation::off>(points, k, options);
-            }
-            t.ms = ms_since(start);
-        },
-        kernel);
-    return t;
+    return timed_triangulation(kernel, [&](const auto& k) {
+        return counters
+                   ? delaunay::triangulate<delaunay::Instrumentation::counters>(points, k, options)
+                   : delaunay::triangulate<delaunay::Instrumentation::off>(points, k, options);
+    });
 }
 
 namespace {
@@ -213,7 +201,10 @@ std::optional<io::PointFile> PointRun::read() {
 Triangulated PointRun::triangulate(const AnyKernel& kernel, std::span<const Point2> points,
                                    const delaunay::Options& options, bool counters) {
     progress.phase("triangulating " + std::to_string(points.size()) + " points");
-    Triangulated t = triangulate_points(kernel, points, options, counters);
+    return recorded(triangulate_points(kernel, points, options, counters));
+}
+
+Triangulated PointRun::recorded(Triangulated t) {
     times.triangulate = t.ms;
     if (!t.result.ok()) {
         progress.stop();

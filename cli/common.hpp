@@ -131,6 +131,23 @@ struct Triangulated {
     double ms = 0;
 };
 
+/// make(k) (a delaunay::Result) for the kernel `kernel` holds, timed, with the kernel's
+/// name and exactness.
+template <class Make>
+Triangulated timed_triangulation(const AnyKernel& kernel, Make make) {
+    Triangulated t;
+    std::visit(
+        [&](const auto& k) {
+            t.kernel_name = k.name();
+            t.exact_kernel = std::decay_t<decltype(k)>::is_exact;
+            const Clock::time_point start = Clock::now();
+            t.result = make(k);
+            t.ms = ms_since(start);
+        },
+        kernel);
+    return t;
+}
+
 /// Triangulates `points` with `kernel`, instrumented (counters) iff `counters`.
 Triangulated triangulate_points(const AnyKernel& kernel, std::span<const Point2> points,
                                 const delaunay::Options& options, bool counters);
@@ -221,6 +238,14 @@ public:
     /// A failed triangulation is said with print_triangulation_failure.
     Triangulated triangulate(const AnyKernel& kernel, std::span<const Point2> points,
                              const delaunay::Options& options, bool counters);
+    /// The same step for another triangulation of the points: make(k) gives its
+    /// delaunay::Result; `what` names it on the progress line.
+    template <class Make>
+    Triangulated triangulate_with(const AnyKernel& kernel, std::size_t points,
+                                  std::string_view what, Make make) {
+        progress.phase("triangulating " + std::to_string(points) + " points" + std::string(what));
+        return recorded(timed_triangulation(kernel, make));
+    }
     /// The output step (times.write): `write` on standard output when `output` holds no
     /// file, else into its temporary file, then each file `beside` into its own; then
     /// every file is renamed into place, the output first. An I/O error is said, and
@@ -241,6 +266,9 @@ public:
     StepTimes times;
 
 private:
+    /// The step's time into `times`; a failure said on standard error.
+    Triangulated recorded(Triangulated t);
+
     const PointCommand& command_;
     Clock::time_point start_;
 };

@@ -223,32 +223,6 @@ void print_stats(std::ostream& err, std::size_t points, const Triangulated& t,
     err << stats_line(stats);
 }
 
-/// --furthest-site: the furthest-site triangulation (furthest.hpp), timed as the run's
-/// triangulation step.
-Triangulated furthest_triangulation(const AnyKernel& kernel, std::span<const Point2> points,
-                                    PointRun& steps) {
-    steps.progress.phase("triangulating " + std::to_string(points.size()) +
-                         " points (furthest site)");
-    Triangulated t;
-    std::visit(
-        [&](const auto& k) {
-            t.kernel_name = k.name();
-            t.exact_kernel = std::decay_t<decltype(k)>::is_exact;
-            const Clock::time_point start = Clock::now();
-            delaunay::FurthestResult r = delaunay::furthest_site_triangulation(points, k);
-            t.result.triangulation = std::move(r.triangulation);
-            t.result.failure = std::move(r.failure);
-            t.ms = ms_since(start);
-        },
-        kernel);
-    steps.times.triangulate = t.ms;
-    if (!t.result.ok()) {
-        steps.progress.stop();
-        print_triangulation_failure(std::cerr, t);
-    }
-    return t;
-}
-
 int run(const Options& o, const CommandLine& cli) {
     const Clock::time_point run_start = Clock::now();
     std::string error;
@@ -281,9 +255,17 @@ int run(const Options& o, const CommandLine& cli) {
 
     const delaunay::Options options =
         delaunay::Options{}.with_algorithm(o.algorithm).with_threads(o.threads);
-    const Triangulated triangulated = o.furthest
-                                          ? furthest_triangulation(*kernel, points, steps)
-                                          : steps.triangulate(*kernel, points, options, false);
+    // --furthest-site: the furthest-site triangulation (furthest.hpp) instead.
+    const auto furthest = [&](const auto& k) {
+        delaunay::FurthestResult r = delaunay::furthest_site_triangulation(points, k);
+        delaunay::Result out;
+        out.triangulation = std::move(r.triangulation);
+        out.failure = std::move(r.failure);
+        return out;
+    };
+    const Triangulated triangulated =
+        o.furthest ? steps.triangulate_with(*kernel, points.size(), " (furthest site)", furthest)
+                   : steps.triangulate(*kernel, points, options, false);
     const delaunay::Triangulation& tri = triangulated.result.triangulation;
     delaunay::VoronoiDiagram diagram;
     std::optional<delaunay::ClippedVoronoi> clipped;
