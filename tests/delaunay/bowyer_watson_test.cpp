@@ -70,6 +70,37 @@ TEST(Brio, HilbertKeysVisitNeighbouringCellsInTurn) {
     EXPECT_EQ(cells.back().second, (std::pair<int, int>{15, 0}));  // ends lower right
 }
 
+TEST(Brio, HilbertKeyByTableEqualsScaleByScale) {
+    // The table form (four scales a lookup) against hilbert_steps over all 16 scales, on
+    // every cell of the finest 256 x 256 block, on a corner of each frame's quadrants and
+    // on random cells; and, at full resolution, consecutive keys of the finest 64 x 64
+    // block at the origin are neighbouring cells.
+    using exidel::delaunay::detail::hilbert_key;
+    using exidel::delaunay::detail::hilbert_steps;
+    const auto slow = [](std::uint32_t x, std::uint32_t y) {
+        return hilbert_steps(x, y, 15, 16, 0) & 0xffffffffu;
+    };
+    for (std::uint32_t x = 0; x < 256; ++x)
+        for (std::uint32_t y = 0; y < 256; ++y) ASSERT_EQ(hilbert_key(x, y), slow(x, y)) << x << y;
+    std::mt19937_64 rng(11);
+    for (int i = 0; i < 200000; ++i) {
+        const auto x = static_cast<std::uint32_t>(rng() & 0xffff);
+        const auto y = static_cast<std::uint32_t>(rng() & 0xffff);
+        ASSERT_EQ(hilbert_key(x, y), slow(x, y)) << x << ' ' << y;
+    }
+    std::vector<std::pair<std::uint32_t, std::pair<int, int>>> cells;
+    for (int i = 0; i < 64; ++i)
+        for (int j = 0; j < 64; ++j) cells.push_back({hilbert_key(i, j), {i, j}});
+    std::sort(cells.begin(), cells.end());
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+        EXPECT_EQ(cells[k].first, k);  // the first 4096 positions of the curve
+        if (k == 0) continue;
+        const auto [x0, y0] = cells[k - 1].second;
+        const auto [x1, y1] = cells[k].second;
+        EXPECT_EQ(std::abs(x1 - x0) + std::abs(y1 - y0), 1) << "step " << k;
+    }
+}
+
 TEST(Brio, OrderIsAPermutationAndReproducible) {
     std::mt19937_64 rng(3);
     std::uniform_real_distribution<double> u(-1, 1);

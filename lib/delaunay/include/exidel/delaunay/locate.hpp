@@ -261,6 +261,7 @@ private:
     template <PredicateKernel W>
     Location walk_from(const W& walker, Point2 q, std::uint32_t start, detail::WalkRandom& random,
                        std::uint64_t bound, std::size_t query) const;
+    Location to_triangulation(Location local) const noexcept;
 
     std::span<const Point2> points_;
     const Triangulation& tri_;
@@ -389,10 +390,7 @@ Locator<K>::Locator(std::span<const Point2> points, const Triangulation& triangu
                          c = points_[T[3 * t + 2]];
             centroids[t] = {a.x / 3 + b.x / 3 + c.x / 3, a.y / 3 + b.y / 3 + c.y / 3};
         }
-        const std::vector<std::uint32_t> keys = detail::hilbert_keys(centroids);
-        detail::FreshVector<detail::KeyIndex> sorted(m);
-        for (std::size_t t = 0; t < m; ++t) sorted[t] = {keys[t], static_cast<std::uint32_t>(t)};
-        detail::radix_sort(sorted);
+        const detail::FreshVector<detail::KeyIndex> sorted = detail::hilbert_sorted(centroids);
         triangle_of_local_.resize(m);
         local_of_triangle_.resize(m);
         for (std::size_t k = 0; k < m; ++k) {
@@ -487,14 +485,8 @@ Location Locator<K>::walk_from(const W& walker, Point2 q, std::uint32_t start,
     Location out;
     const auto status = detail::walk(walker, local_points_.data(), local_triangles_.data(),
                                      local_halfedges_.data(), q, start, bound, random, out);
-    if (status == detail::WalkStatus::found) [[likely]] {
-        // From the local numbers to the triangulation's.
-        const std::uint32_t t = triangle_of_local_[static_cast<std::uint32_t>(out.triangle)];
-        if (out.edge >= 0) out.edge = static_cast<std::int32_t>(3 * t + out.edge % 3);
-        out.triangle = static_cast<std::int32_t>(t);
-        if (out.vertex != no_vertex) out.vertex = input_of_local_[out.vertex];
+    if (status == detail::WalkStatus::found) [[likely]]
         return out;
-    }
     const std::string which = query == no_index ? "the query" : "query " + std::to_string(query);
     if (status == detail::WalkStatus::exceeded) {
         throw FailureError(Failure{FailureKind::location_exceeded, query, no_index,
@@ -503,6 +495,16 @@ Location Locator<K>::walk_from(const W& walker, Point2 q, std::uint32_t start,
     }
     throw FailureError(Failure{FailureKind::location_inconsistent, query, no_index,
                                which + " is on all three edge lines of a triangle"});
+}
+
+/// A walk's answer (local numbers) in the triangulation's numbers.
+template <PredicateKernel K>
+Location Locator<K>::to_triangulation(Location out) const noexcept {
+    const std::uint32_t t = triangle_of_local_[static_cast<std::uint32_t>(out.triangle)];
+    if (out.edge >= 0) out.edge = static_cast<std::int32_t>(3 * t + out.edge % 3);
+    out.triangle = static_cast<std::int32_t>(t);
+    if (out.vertex != no_vertex) out.vertex = input_of_local_[out.vertex];
+    return out;
 }
 
 template <PredicateKernel K>
@@ -520,7 +522,8 @@ Location Locator<K>::locate(Point2 q, std::int32_t hint) {
     }
     const std::uint32_t start =
         hint < 0 ? jump_start(q) : local_of_triangle_[static_cast<std::uint32_t>(hint)];
-    const Location where = walk_from(kernel_, q, start, random_, bound_, no_index);
+    const Location where =
+        to_triangulation(walk_from(kernel_, q, start, random_, bound_, no_index));
     last_ = where.triangle;
     return where;
 }
@@ -558,42 +561,49 @@ std::optional<Failure> Locator<K>::locate_with(const W& walker, std::span<const 
         });
         return std::nullopt;
     }
-    // Hilbert order: the queries gathered in curve order, walked, and the answers
-    // scattered back, so that the walks read and write consecutive memory.
+    // Hilbert order: each chunk's queries gathered in curve order, walked, and the answers
+    // scattered back, so that the walks read and write consecutive memory (buffers of a
+    // chunk, in cache, not of the whole batch: fresh memory costs a page fault per 4 KiB).
     detail::FreshVector<detail::KeyIndex> sorted;
-    detail::FreshVector<Point2> gathered;
-    detail::FreshVector<Location> answers;
-    if (options.order == LocateOrder::hilbert) {
-        const std::vector<std::uint32_t> keys = detail::hilbert_keys(queries);
-        sorted.resize(n);
-        for (std::size_t i = 0; i < n; ++i) sorted[i] = {keys[i], static_cast<std::uint32_t>(i)};
-        detail::radix_sort(sorted);
-        gathered.resize(n);
-        for (std::size_t i = 0; i < n; ++i) gathered[i] = queries[sorted[i].index];
-        answers.resize(n);
-    }
-    const std::span<const Point2> walked = sorted.empty() ? queries : gathered;
-    const std::span<Location> written = sorted.empty() ? out : std::span<Location>(answers);
+    if (options.order == LocateOrder::hilbert) sorted = detail::hilbert_sorted(queries);
     const std::uint64_t bound = options.step_bound != 0 ? options.step_bound : bound_;
     const bool jump = options.order == LocateOrder::jump;
     try {
         parallel_for(chunks, options.threads, [&](std::size_t c) {
             detail::WalkRandom random{static_cast<std::uint32_t>(0x2545f491u + 0x9e3779b9u * c)};
+            const std::size_t begin = c * chunk, end = std::min(n, begin + chunk);
+            std::span<const Point2> walked = queries.subspan(begin, end - begin);
+            std::span<Location> written = out.subspan(begin, end - begin);
+            std::vector<Point2> gathered;
+            std::vector<Location> answers;
+            if (!sorted.empty()) {
+                gathered.resize(end - begin);
+                answers.resize(end - begin);
+                for (std::size_t i = begin; i < end; ++i)
+                    gathered[i - begin] = queries[sorted[i].index];
+                walked = gathered;
+                written = answers;
+            }
+            // The previous answer's local triangle (a walk from it reads memory the last
+            // one read; its number in the triangulation would be a lookup at random).
             std::int32_t previous = -1;
-            for (std::size_t i = c * chunk; i < std::min(n, (c + 1) * chunk); ++i) {
+            for (std::size_t i = 0; i < walked.size(); ++i) {
                 const Point2 q = walked[i];
                 const std::uint32_t start =
-                    jump || previous < 0 ? jump_start(q)
-                                         : local_of_triangle_[static_cast<std::uint32_t>(previous)];
-                written[i] = walk_from(walker, q, start, random, bound,
-                                       sorted.empty() ? i : sorted[i].index);
-                previous = written[i].triangle;
+                    jump || previous < 0 ? jump_start(q) : static_cast<std::uint32_t>(previous);
+                const Location local =
+                    walk_from(walker, q, start, random, bound,
+                              sorted.empty() ? begin + i : sorted[begin + i].index);
+                previous = local.triangle;
+                written[i] = to_triangulation(local);
+            }
+            if (!sorted.empty()) {
+                for (std::size_t i = begin; i < end; ++i) out[sorted[i].index] = answers[i - begin];
             }
         });
     } catch (FailureError& e) {
         return std::move(e.failure);
     }
-    for (std::size_t i = 0; i < sorted.size(); ++i) out[sorted[i].index] = answers[i];
     return std::nullopt;
 }
 

@@ -276,10 +276,7 @@ std::optional<Failure> natural_batch(const Locator<K>& locator, std::span<const 
     std::vector<Point2> gathered;
     LocateOptions locate = options.locate;
     if (locate.order == LocateOrder::hilbert) {
-        const std::vector<std::uint32_t> keys = hilbert_keys(queries);
-        FreshVector<KeyIndex> sorted(n);
-        for (std::size_t i = 0; i < n; ++i) sorted[i] = {keys[i], static_cast<std::uint32_t>(i)};
-        radix_sort(sorted);
+        const FreshVector<KeyIndex> sorted = hilbert_sorted(queries);
         order.resize(n);
         gathered.resize(n);
         for (std::size_t i = 0; i < n; ++i) {
