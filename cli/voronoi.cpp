@@ -185,7 +185,7 @@ struct Failure {
 };
 
 // One JSON object on one line, keys in a fixed order.
-void print_stats(std::ostream& err, std::size_t points, const Triangulated& t,
+void print_stats(std::ostream& err, std::size_t points, const Triangulated& t, bool furthest,
                  const delaunay::VoronoiDiagram& d, const delaunay::ClippedVoronoi* clipped,
                  const std::optional<Failure>& failure, const StepTimes& steps,
                  const Times& times) {
@@ -205,7 +205,8 @@ void print_stats(std::ostream& err, std::size_t points, const Triangulated& t,
         {"clipped_vertices",
          clipped ? nlohmann::ordered_json(clipped->vertex_count()) : nlohmann::ordered_json()},
         {"kernel", t.kernel_name},
-        {"algorithm", delaunay::to_string(t.result.algorithm)},
+        {"algorithm",
+         furthest ? std::string_view("furthest-site") : delaunay::to_string(t.result.algorithm)},
         {"stage_counts",
          {{"floating", stage(CircumcenterStage::floating)},
           {"double_word", stage(CircumcenterStage::double_word)},
@@ -257,11 +258,7 @@ int run(const Options& o, const CommandLine& cli) {
         delaunay::Options{}.with_algorithm(o.algorithm).with_threads(o.threads);
     // --furthest-site: the furthest-site triangulation (furthest.hpp) instead.
     const auto furthest = [&](const auto& k) {
-        delaunay::FurthestResult r = delaunay::furthest_site_triangulation(points, k);
-        delaunay::Result out;
-        out.triangulation = std::move(r.triangulation);
-        out.failure = std::move(r.failure);
-        return out;
+        return delaunay::furthest_site_triangulation(points, k).to_result();
     };
     const Triangulated triangulated =
         o.furthest ? steps.triangulate_with(*kernel, points.size(), " (furthest site)", furthest)
@@ -272,7 +269,7 @@ int run(const Options& o, const CommandLine& cli) {
     std::optional<Failure> failure;
     const auto finish = [&](int status) {
         return steps.finish(status, [&] {
-            print_stats(std::cerr, points.size(), triangulated, diagram,
+            print_stats(std::cerr, points.size(), triangulated, o.furthest, diagram,
                         clipped ? &*clipped : nullptr, failure, steps.times, times);
         });
     };

@@ -134,6 +134,10 @@ TEST(ExidelVoronoi, FurthestSiteIsTheLibrarysDiagram) {
     std::size_t regions = 0;
     for (std::size_t i = 0; i < points.size(); ++i) regions += !j["cells"][i].empty();
     EXPECT_EQ(regions, t.triangulation.hull.size() + (j["cells"][3].empty() ? 0 : 1));
+    const nlohmann::json stats =
+        nlohmann::json::parse(run("--stats --unclipped --furthest-site", xy_text(points)).err);
+    EXPECT_EQ(stats["algorithm"], "furthest-site");
+    EXPECT_EQ(stats["triangles"], t.triangulation.triangle_count());
     const RunResult clipped = run("-q --furthest-site", xy_text(points));
     EXPECT_EQ(clipped.status, 2);
     EXPECT_NE(clipped.err.find("--unclipped"), std::string::npos) << clipped.err;

@@ -130,10 +130,7 @@ py::dict furthest_site(py::object points_object, const std::string& kernel_name)
             [&](const auto& k) { return delaunay::furthest_site_triangulation(points.span(), k); },
             kernel);
     }
-    delaunay::Result result;
-    result.triangulation = std::move(furthest.triangulation);
-    result.failure = std::move(furthest.failure);
-    py::dict d = result_dict(std::move(result), false);
+    py::dict d = result_dict(std::move(furthest).to_result(), false);
     d["algorithm"] = "furthest-site";
     d["strategy"] = "none";
     return d;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "delaunay_support.hpp"
+#include "exidel/delaunay/interpolate.hpp"
 #include "exidel/delaunay/locate.hpp"
 #include "exidel/delaunay/triangulate.hpp"
 #include "lying_kernel.hpp"
@@ -376,6 +377,36 @@ TEST(Locate, StepBoundStopsTheWalk) {
         locator.locate(far, out, {.order = delaunay::LocateOrder::given, .step_bound = 2});
     ASSERT_TRUE(f.has_value());
     EXPECT_EQ(f->kind, delaunay::FailureKind::location_exceeded);
+}
+
+// Linear interpolation reproduces a linear function (up to rounding) wherever a query is
+// located, and huge coordinates give finite values (products of their differences would
+// overflow without the scaling in interpolate.cpp).
+TEST(InterpolateLinear, ReproducesALinearFunctionAtEveryScale) {
+    for (const double scale : {1.0, 0x1p-600, 0x1p600, 0x1p1000}) {
+        std::vector<Point2> points = uniform_points(400, 5);
+        const std::vector<Point2> unit = points;
+        for (Point2& p : points) p = {p.x * scale, p.y * scale};
+        const auto t = delaunay::triangulate(points, AdaptiveKernel{}).triangulation;
+        std::vector<double> values;
+        for (const Point2& p : unit) values.push_back(2 * p.x - 3 * p.y + 1);
+        std::vector<Point2> queries = degenerate_queries(points, t, 7);
+        for (const Point2& q : uniform_points(200, 6))
+            queries.push_back({q.x * scale, q.y * scale});
+        Locator<AdaptiveKernel> locator(points, t);
+        std::vector<Location> where(queries.size());
+        ASSERT_FALSE(locator.locate(queries, where).has_value());
+        std::vector<double> out(queries.size());
+        delaunay::interpolate_linear(points, t, values, queries, where, out, -99);
+        for (std::size_t i = 0; i < queries.size(); ++i) {
+            if (where[i].kind == LocationKind::outside) {
+                EXPECT_EQ(out[i], -99);
+                continue;
+            }
+            const double x = queries[i].x / scale, y = queries[i].y / scale;
+            EXPECT_NEAR(out[i], 2 * x - 3 * y + 1, 1e-9) << "scale " << scale << " query " << i;
+        }
+    }
 }
 
 }  // namespace

@@ -1,6 +1,9 @@
 // exidel: linear interpolation from exact locations (interpolate.hpp says the arithmetic).
 #include "exidel/delaunay/interpolate.hpp"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -12,9 +15,25 @@ double cross(Point2 u, Point2 v, Point2 q) {
     return (u.x - q.x) * (v.y - q.y) - (u.y - q.y) * (v.x - q.x);
 }
 
+/// The points scaled by one power of two when the largest coordinate is beyond 2^500 or,
+/// not zero, below 2^-400: then differences stay below 1 and their products can neither
+/// overflow nor, for differences near the largest, underflow. Exact, but for coordinates
+/// far below the largest, which may lose low bits when scaling down. The weights are
+/// ratios, the same for any common scale.
+template <std::size_t N>
+void fit(std::array<Point2, N>& p) {
+    double m = 0;
+    for (const Point2& v : p) m = std::max({m, std::fabs(v.x), std::fabs(v.y)});
+    if (!(m > 0x1p500) && !(m < 0x1p-400 && m > 0)) return;
+    const int e = -(std::ilogb(m) + 2);
+    for (Point2& v : p) v = {std::ldexp(v.x, e), std::ldexp(v.y, e)};
+}
+
 double along(Point2 a, Point2 b, double va, double vb, Point2 q) {
-    const double dx = b.x - a.x, dy = b.y - a.y;
-    const double t = ((q.x - a.x) * dx + (q.y - a.y) * dy) / (dx * dx + dy * dy);
+    std::array<Point2, 3> p{a, b, q};
+    fit(p);
+    const double dx = p[1].x - p[0].x, dy = p[1].y - p[0].y;
+    const double t = ((p[2].x - p[0].x) * dx + (p[2].y - p[0].y) * dy) / (dx * dx + dy * dy);
     return (1 - t) * va + t * vb;
 }
 
@@ -48,12 +67,14 @@ void interpolate_linear(std::span<const Point2> points, const Triangulation& t,
             case LocationKind::inside: {
                 const std::size_t base = 3 * static_cast<std::size_t>(w.triangle);
                 const std::uint32_t a = T[base], b = T[base + 1], c = T[base + 2];
-                const Point2 pa = points[a], pb = points[b], pc = points[c];
-                const double A = cross(pb, pc, q), B = cross(pc, pa, q), C = cross(pa, pb, q);
+                std::array<Point2, 4> p{points[a], points[b], points[c], q};
+                fit(p);
+                const auto [pa, pb, pc, s] = p;
+                const double A = cross(pb, pc, s), B = cross(pc, pa, s), C = cross(pa, pb, s);
                 const double sum = A + B + C;
                 // A triangle too thin for its rounded area: a segment, in doubles.
                 out[i] = sum != 0 ? (A * values[a] + B * values[b] + C * values[c]) / sum
-                                  : along(pa, pb, values[a], values[b], q);
+                                  : along(pa, pb, values[a], values[b], s);
                 break;
             }
         }

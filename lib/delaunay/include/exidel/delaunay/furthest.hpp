@@ -42,6 +42,13 @@ struct FurthestResult {
     Triangulation triangulation;
     std::optional<Failure> failure;
     bool ok() const noexcept { return !failure.has_value(); }
+    /// As triangulate()'s Result (no counters), for code that handles both.
+    Result to_result() && {
+        Result r;
+        r.triangulation = std::move(triangulation);
+        r.failure = std::move(failure);
+        return r;
+    }
 };
 
 template <PredicateKernel K>

@@ -10,7 +10,9 @@
 //                 C = (a - q) x (b - q), each rounded to double;
 //   outside       `fill`.
 // The weights are rounded, with no proven bound: their error relative to the triangle
-// grows as it gets thinner. Collinear points (no triangles) interpolate along their chain.
+// grows as it gets thinner. Coordinates beyond 2^500 or below 2^-400 are first scaled by
+// a power of two, so that no product overflows or vanishes (finite values at any finite
+// coordinates give finite results). Collinear points (no triangles) interpolate along their chain.
 #pragma once
 
 #include <span>

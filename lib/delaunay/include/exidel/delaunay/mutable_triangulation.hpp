@@ -177,7 +177,8 @@ private:
     void remove_vertex(std::uint32_t v);
     std::uint32_t make(std::uint32_t a, std::uint32_t b, std::uint32_t c);
     void attach(std::int32_t half, std::int32_t outside);
-    void legalize(std::size_t budget, std::uint32_t id, bool all_sides);
+    void legalize(std::size_t budget, std::uint32_t id, bool removal);
+    bool in_hole(std::uint32_t t) const noexcept;
     bool star(std::uint32_t v);
     bool fill(std::span<const std::uint32_t> poly, std::span<std::int32_t> handle,
               const Point2* centre);
@@ -205,6 +206,8 @@ private:
     // Scratch of remove(), kept to avoid allocating per call.
     std::vector<std::int32_t> star_, handle_, stack_;
     std::vector<std::uint32_t> ring_, pool_, hull_stack_, prev_, next_;
+    std::vector<std::uint32_t> hole_;  // the removed vertex's triangles, sorted when many
+    static constexpr std::size_t hole_scan = 32;
 };
 
 // ---------------------------------------------------------------------------------------
@@ -589,8 +592,16 @@ void MutableTriangulation<K>::insert_collinear(std::uint32_t id) {
 /// Lawson's flips from the half-edges in stack_. After an insertion (`all_sides` false)
 /// each holds the new point as the apex of its triangle and a flip queues the two edges
 /// then opposite it; after a removal every side of a flipped quadrilateral is queued.
+/// Whether triangle t is one of the removed vertex's (whose slots the hole's new
+/// triangles reuse, make()): a scan of a few, a binary search of many.
 template <PredicateKernel K>
-void MutableTriangulation<K>::legalize(std::size_t budget, std::uint32_t id, bool all_sides) {
+bool MutableTriangulation<K>::in_hole(std::uint32_t t) const noexcept {
+    if (hole_.size() <= hole_scan) return std::find(hole_.begin(), hole_.end(), t) != hole_.end();
+    return std::binary_search(hole_.begin(), hole_.end(), t);
+}
+
+template <PredicateKernel K>
+void MutableTriangulation<K>::legalize(std::size_t budget, std::uint32_t id, bool removal) {
     const auto& T = mesh_.triangles;
     const auto& H = mesh_.halfedges;
     while (!stack_.empty()) {
@@ -616,11 +627,18 @@ void MutableTriangulation<K>::legalize(std::size_t budget, std::uint32_t id, boo
         detail::flip_edge(mesh_, e);  // e: d -> b, t: c -> a
         edge_[a] = static_cast<std::int32_t>(next_halfedge(t));
         edge_[b] = static_cast<std::int32_t>(next_halfedge(e));
-        stack_.push_back(static_cast<std::int32_t>(e));
-        stack_.push_back(static_cast<std::int32_t>(next_halfedge(t)));
-        if (all_sides) {
-            stack_.push_back(static_cast<std::int32_t>(next_halfedge(e)));
-            stack_.push_back(static_cast<std::int32_t>(t));
+        if (!removal) {  // the sides opposite the new point
+            stack_.push_back(static_cast<std::int32_t>(e));
+            stack_.push_back(static_cast<std::int32_t>(next_halfedge(t)));
+            continue;
+        }
+        // The sides of the quadrilateral inside the hole: one on its border is locally
+        // Delaunay whatever fills the hole (point 2 at the top of the file), and testing
+        // it would read the triangle outside, far away in memory.
+        for (const std::size_t side : {e, next_halfedge(e), t, next_halfedge(t)}) {
+            const std::int32_t across = H[side];
+            if (across >= 0 && in_hole(static_cast<std::uint32_t>(across) / 3))
+                stack_.push_back(static_cast<std::int32_t>(side));
         }
     }
 }
@@ -654,6 +672,13 @@ template <PredicateKernel K>
 void MutableTriangulation<K>::remove(std::uint32_t id) {
     check_usable();
     check_live(id, "remove");
+    // What a removal reads first about the vertex, from five arrays (every id has an
+    // entry in each, new_id): in a large triangulation each read is a cache miss, and
+    // requested together they overlap.
+    __builtin_prefetch(&next_copy_[id]);
+    __builtin_prefetch(&edge_[id]);
+    __builtin_prefetch(&mesh_.hull_next[id]);
+    __builtin_prefetch(&pts_[id]);
     const std::uint32_t r = rep_[id];
     --live_ids_;
     if (id != r) {  // a copy: the point stays
@@ -710,19 +735,20 @@ void MutableTriangulation<K>::remove_vertex(std::uint32_t v) {
     ring_.clear();
     handle_.clear();
     pool_.clear();
+    hole_.clear();
     for (const std::int32_t e : star_) {
         const std::size_t n = next_halfedge(static_cast<std::size_t>(e));
-        const std::int32_t h = H[n];
-        if (h >= 0) {  // the triangle outside the hole must not be one of v's
-            const std::size_t o = 3 * (static_cast<std::size_t>(h) / 3);
-            if (T[o] == v || T[o + 1] == v || T[o + 2] == v) {
-                fail(FailureKind::update_inconsistent, v,
-                     "the triangles around vertex " + std::to_string(v) + " fold onto each other");
-            }
-        }
         ring_.push_back(T[n]);
-        handle_.push_back(h);
+        handle_.push_back(H[n]);
         pool_.push_back(static_cast<std::uint32_t>(e) / 3);
+        hole_.push_back(static_cast<std::uint32_t>(e) / 3);
+    }
+    if (hole_.size() > hole_scan) std::sort(hole_.begin(), hole_.end());
+    for (const std::int32_t h : handle_) {  // the triangle outside must not be one of v's
+        if (h >= 0 && in_hole(static_cast<std::uint32_t>(h) / 3)) {
+            fail(FailureKind::update_inconsistent, v,
+                 "the triangles around vertex " + std::to_string(v) + " fold onto each other");
+        }
     }
     edge_[v] = -1;
     stack_.clear();
@@ -810,6 +836,7 @@ void MutableTriangulation<K>::remove_vertex(std::uint32_t v) {
     for (const std::uint32_t t : pool_) mesh_.remove_triangle(t);
     pool_.clear();
     legalize(ring_.size() * ring_.size() + 64, v, true);
+    hole_.clear();
     for (const std::uint32_t u : ring_) {  // every neighbour left with a live half-edge
         const std::int32_t e = edge_[u];
         if (e < 0 || T[static_cast<std::size_t>(e)] != u) {
