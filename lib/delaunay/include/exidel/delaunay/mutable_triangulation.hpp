@@ -36,7 +36,8 @@
 //     every remaining point lies on one line there are no triangles left, and the
 //     triangulation becomes a chain of collinear points again.
 //   Then Lawson's flips run over the new edges (and the sides of every flipped
-//   quadrilateral) until none has its opposite vertex strictly inside a circle.
+//   quadrilateral that are inside the hole: a side on its border is locally Delaunay by
+//   point 2 below) until none has its opposite vertex strictly inside a circle.
 //
 // Why the result is a Delaunay triangulation, cocircular points included (the tie-break
 // the issue asks for is: no flip on a circle, so any triangulation of cocircular points
@@ -659,6 +660,9 @@ bool MutableTriangulation<K>::star(std::uint32_t v) {
                  "the triangles around vertex " + std::to_string(v) + " do not close");
         }
         star_.push_back(e);
+        // The neighbour's coordinates, which every caller reads next: requested now, the
+        // load overlaps the rest of the walk around v.
+        __builtin_prefetch(&pts_[mesh_.triangles[next_halfedge(static_cast<std::size_t>(e))]]);
         e = H[prev_halfedge(static_cast<std::size_t>(e))];
     } while (e != first && !(on_hull && e < 0));
     if (!on_hull && e < 0) {

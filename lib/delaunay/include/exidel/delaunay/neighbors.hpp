@@ -92,17 +92,21 @@ private:
 
 /// The best-first search (the top of the file) from input vertex `seed`: calls
 /// take(input index) for each point in order of distance to q (ties by input index) while
-/// it returns true.
-/// Neighbours come from the local mesh, or, for collinear points, from the chain
-/// (`position`: input index -> place in Triangulation::hull).
+/// it returns true. The search runs on the Locator's local vertices (their coordinates
+/// in its Hilbert layout: neighbours are near in memory, where input indices would be
+/// anywhere); for collinear points, on input indices along the chain (`position`: input
+/// index -> place in Triangulation::hull).
 template <PredicateKernel K, class Take>
 void best_first(const Locator<K>& locator, const LocalMesh& m,
                 std::span<const std::uint32_t> position, Point2 q, std::uint32_t seed,
                 std::vector<std::uint32_t>& heap, std::vector<std::uint32_t>& group,
                 VisitedSet& visited, Take&& take) {
     const Triangulation& t = locator.triangulation();
-    const auto points = locator.points();
-    // Input indices in a heap whose top is the nearest.
+    const bool chain = t.collinear;
+    const std::span<const Point2> points = chain ? locator.points() : m.points;
+    const auto input = [&](std::uint32_t v) { return chain ? v : m.input_of_local[v]; };
+    // Vertices in a heap whose top is the nearest (ties by vertex number: a group of
+    // equally near points is sorted by input index below anyway).
     const auto farther = [&](std::uint32_t a, std::uint32_t b) {
         const Sign s = locator.kernel().compare_distance(q, points[a], points[b]);
         return s == Sign::positive || (s == Sign::zero && a > b);
@@ -110,8 +114,9 @@ void best_first(const Locator<K>& locator, const LocalMesh& m,
     heap.clear();
     visited.clear();
     group.clear();
-    heap.push_back(seed);
-    visited.insert(seed);
+    const std::uint32_t start = chain ? seed : m.local_of_input[seed];
+    heap.push_back(start);
+    visited.insert(start);
     const auto push = [&](std::uint32_t v) {
         if (!visited.insert(v)) return;
         heap.push_back(v);
@@ -121,6 +126,7 @@ void best_first(const Locator<K>& locator, const LocalMesh& m,
     // is popped) but in the order they were reached: each such group is given to `take`
     // sorted by input index once it is complete.
     const auto flush = [&] {
+        for (std::uint32_t& v : group) v = input(v);
         std::sort(group.begin(), group.end());
         for (const std::uint32_t v : group)
             if (!take(v)) return false;
@@ -136,18 +142,17 @@ void best_first(const Locator<K>& locator, const LocalMesh& m,
             !flush())
             return;
         group.push_back(v);
-        if (t.collinear) {
+        if (chain) {
             const std::size_t i = position[v];
             if (i > 0) push(t.hull[i - 1]);
             if (i + 1 < t.hull.size()) push(t.hull[i + 1]);
             continue;
         }
-        const std::uint32_t local = m.local_of_input[v];
-        const auto first = static_cast<std::size_t>(m.vertex_edge[local]);
+        const auto first = static_cast<std::size_t>(m.vertex_edge[v]);
         std::size_t e = first;
         do {  // every triangle around v, counter-clockwise
-            push(m.input_of_local[m.triangles[next_halfedge(e)]]);
-            push(m.input_of_local[m.triangles[prev_halfedge(e)]]);
+            push(m.triangles[next_halfedge(e)]);
+            push(m.triangles[prev_halfedge(e)]);
             const std::int32_t twin = m.halfedges[prev_halfedge(e)];
             if (twin < 0) break;
             e = static_cast<std::size_t>(twin);
