@@ -12,7 +12,8 @@
 // The weights are rounded, with no proven bound: their error relative to the triangle
 // grows as it gets thinner. Coordinates beyond 2^500 or below 2^-400 are first scaled by
 // a power of two, so that no product overflows or vanishes (finite values at any finite
-// coordinates give finite results). Collinear points (no triangles) interpolate along their chain.
+// coordinates give finite results). Collinear points (no triangles) interpolate along
+// their chain.
 #pragma once
 
 #include <span>

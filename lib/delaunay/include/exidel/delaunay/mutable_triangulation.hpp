@@ -590,9 +590,6 @@ void MutableTriangulation<K>::insert_collinear(std::uint32_t id) {
     last_ = static_cast<std::int32_t>(t);
 }
 
-/// Lawson's flips from the half-edges in stack_. After an insertion (`all_sides` false)
-/// each holds the new point as the apex of its triangle and a flip queues the two edges
-/// then opposite it; after a removal every side of a flipped quadrilateral is queued.
 /// Whether triangle t is one of the removed vertex's (whose slots the hole's new
 /// triangles reuse, make()): a scan of a few, a binary search of many.
 template <PredicateKernel K>
@@ -601,6 +598,10 @@ bool MutableTriangulation<K>::in_hole(std::uint32_t t) const noexcept {
     return std::binary_search(hole_.begin(), hole_.end(), t);
 }
 
+/// Lawson's flips from the half-edges in stack_. After an insertion (`removal` false)
+/// each holds the new point as the apex of its triangle and a flip queues the two edges
+/// then opposite it; after a removal a flip queues the sides of its quadrilateral that
+/// are inside the hole.
 template <PredicateKernel K>
 void MutableTriangulation<K>::legalize(std::size_t budget, std::uint32_t id, bool removal) {
     const auto& T = mesh_.triangles;
