@@ -101,6 +101,7 @@
 
 #include "exidel/delaunay/algorithms.hpp"
 #include "exidel/delaunay/triangulate.hpp"
+#include "exidel/testing/point_sets.hpp"
 #include "generators.hpp"
 
 // ---------------------------------------------------------------------------------------
@@ -217,8 +218,9 @@ std::vector<Point2> generate(const std::string& name, std::size_t n) {
         }
         std::shuffle(p.begin(), p.end(), rng);
     } else {
-        std::fprintf(stderr, "no input family '%s'\n", name.c_str());
-        std::abort();  // a registration typo in this file, not user input
+        // The realistic families (exidel/testing/point_sets.hpp), in their own file order:
+        // throws for a registration typo in this file.
+        p = testing::realistic_points(testing::realistic_from_name(name), n, 20250101 + n);
     }
     return p;
 }
@@ -394,6 +396,20 @@ void add(const std::string& in_name, std::size_t n, bool lexicographic, bool rad
         [=](benchmark::State& s) { cgal_bench(s, prefix + "cgal-epick", in_name, n); });
 }
 
+// The default (t1, t2), the orders it chooses between and the sweep-hull (t1), and CGAL:
+// where the default's choice and its fixed costs are measured on the realistic families.
+void add_default(const std::string& in_name, std::size_t n) {
+    const std::string prefix = "tri/" + in_name + "/" + std::to_string(n) + "/";
+    add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::automatic, 1);
+    add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::automatic, 2);
+    add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::radial, 1);
+    add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::strips, 1);
+    add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::automatic, 1,
+                               delaunay::Algorithm::sweep_hull);
+    reg(prefix + "cgal-epick", n,
+        [=](benchmark::State& s) { cgal_bench(s, prefix + "cgal-epick", in_name, n); });
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -441,6 +457,12 @@ int main(int argc, char** argv) {
     // The lexicographic order's worst case, small enough to run (n^2/8 flips).
     add("parabola-asc", 8192, true, true);
     if (huge) add("uniform", 10'000'000, true, true);
+    // The realistic families, every size from 10^3 (10^7 with --exidel_huge).
+    for (const testing::RealisticInfo& f : testing::realistic_families()) {
+        for (std::size_t n : {1'000u, 10'000u, 100'000u, 1'000'000u})
+            add_default(std::string(f.name), n);
+        if (huge) add_default(std::string(f.name), 10'000'000);
+    }
     if (giant) {
         const std::size_t n = 100'000'000;
         const std::string prefix = "tri/uniform/" + std::to_string(n) + "/";

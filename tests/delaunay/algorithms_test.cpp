@@ -84,6 +84,58 @@ TEST_P(EveryAlgorithm, ExactKernelsMatchCgal) {
                           [&] { check_exact<CppIntExactKernel>(GetParam(), 40); }));
 }
 
+// The realistic families (exidel/testing/point_sets.hpp) at sizes the property tests do
+// not reach: 3000 points for every algorithm (every order of one that takes one), and for
+// one that takes an order 40000 points too, where `automatic` runs strips (on two threads
+// as well: the arrays must not depend on the thread count). Both policies, certified, and
+// CGAL's forced edges.
+TEST_P(EveryAlgorithm, RealisticFamiliesAtScaleMatchCgal) {
+    const AlgorithmInfo& algorithm = GetParam();
+    for (const exidel::testing::RealisticInfo& f : exidel::testing::realistic_families()) {
+        for (const std::size_t n : {std::size_t{3000}, std::size_t{40000}}) {
+            if (n > 3000 && !algorithm.takes_order) continue;
+            const auto points = exidel::testing::realistic_points(f.family, n, 7 + n);
+            const EdgeSets oracle = test::cgal_edge_sets(points);
+            std::vector<Options> runs;
+            for (const InCirclePolicy policy :
+                 {InCirclePolicy::determinant, InCirclePolicy::cosine}) {
+                if (!algorithm.takes_order) {
+                    runs.push_back({.incircle = policy, .algorithm = algorithm.id});
+                    continue;
+                }
+                for (const Strategy order : {Strategy::automatic, Strategy::radial,
+                                             Strategy::strips, Strategy::lexicographic}) {
+                    if (n > 3000 && order != Strategy::automatic) continue;
+                    for (const unsigned threads : {1u, 2u})
+                        runs.push_back({.incircle = policy,
+                                        .strategy = order,
+                                        .threads = threads,
+                                        .algorithm = algorithm.id});
+                }
+            }
+            std::vector<std::uint32_t> first_triangles;
+            for (const Options& o : runs) {
+                const std::string what = std::string(f.name) + " n=" + std::to_string(n) + " " +
+                                         describe(o) + " t" + std::to_string(o.threads);
+                const Result r = triangulate(points, AdaptiveKernel{}, o);
+                ASSERT_TRUE(r.ok()) << what << ": " << r.failure->message;
+                const Certificate c = certify(points, r.triangulation);
+                ASSERT_TRUE(c.ok()) << what << ": " << c.summary();
+                const EdgeSets ours = test::edge_sets(points, r.triangulation);
+                EXPECT_EQ(ours.collinear, oracle.collinear) << what;
+                EXPECT_EQ(ours.forced, oracle.forced) << what;
+                if (o.strategy == Strategy::automatic &&
+                    o.incircle == InCirclePolicy::determinant) {
+                    if (o.threads == 1)
+                        first_triangles = r.triangulation.triangles;
+                    else
+                        EXPECT_EQ(r.triangulation.triangles, first_triangles) << what;
+                }
+            }
+        }
+    }
+}
+
 // An inexact kernel may give a wrong triangulation, never a crash, a hang or an
 // untyped result: either ok() with arrays of the right shape, or a failure with a
 // message.

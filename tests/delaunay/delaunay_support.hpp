@@ -196,18 +196,29 @@ inline std::vector<Point2> gaussian_points(std::uint64_t seed, std::size_t n) {
     return p;
 }
 
-/// The family names of gen_point_set beyond exidel::testing's: "gaussian", and "mixed"
-/// (points of two families together, e.g. a collinear run followed by scattered points,
-/// which exercises the seed fan with k1 > 3).
+/// The family names of gen_point_set beyond exidel::testing's predicate families:
+/// "gaussian", "mixed" (points of two families together, e.g. a collinear run followed by
+/// scattered points, which exercises the seed fan with k1 > 3), and the realistic families
+/// of exidel/testing/point_sets.hpp (places, coastlines, quantized borders, a LiDAR
+/// lattice, blue noise, GPS tracks), drawn from a random seed.
 inline std::vector<std::string> point_set_family_names() {
     std::vector<std::string> names;
     for (const auto& f : testing::all_families()) names.emplace_back(f.name);
     names.emplace_back("gaussian");
     names.emplace_back("mixed");
+    for (const auto& f : testing::realistic_families()) names.emplace_back(f.name);
     return names;
 }
 
 inline rc::Gen<std::vector<Point2>> gen_family_points(const std::string& family, std::size_t n) {
+    for (const auto& f : testing::realistic_families()) {
+        if (family == f.name) {
+            return rc::gen::map(rc::gen::arbitrary<std::uint64_t>(),
+                                [n, r = f.family](std::uint64_t seed) {
+                                    return testing::realistic_points(r, n, seed);
+                                });
+        }
+    }
     if (family == "gaussian") {
         return rc::gen::map(rc::gen::arbitrary<std::uint32_t>(),
                             [n](std::uint32_t seed) { return gaussian_points(seed, n); });
