@@ -396,7 +396,8 @@ void add(const std::string& in_name, std::size_t n, bool lexicographic, bool rad
         [=](benchmark::State& s) { cgal_bench(s, prefix + "cgal-epick", in_name, n); });
 }
 
-// The default (t1, t2), the orders it chooses between and the sweep-hull (t1), and CGAL:
+// The default (t1, t2), the orders it chooses between, the sweep-hull and Bowyer-Watson
+// (t1: a sweep with Lawson's flips, and BRIO insertion with point location), and CGAL:
 // where the default's choice and its fixed costs are measured on the realistic families.
 void add_default(const std::string& in_name, std::size_t n) {
     const std::string prefix = "tri/" + in_name + "/" + std::to_string(n) + "/";
@@ -406,6 +407,8 @@ void add_default(const std::string& in_name, std::size_t n) {
     add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::strips, 1);
     add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::automatic, 1,
                                delaunay::Algorithm::sweep_hull);
+    add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::automatic, 1,
+                               delaunay::Algorithm::bowyer_watson);
     reg(prefix + "cgal-epick", n,
         [=](benchmark::State& s) { cgal_bench(s, prefix + "cgal-epick", in_name, n); });
 }

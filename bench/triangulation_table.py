@@ -136,7 +136,7 @@ def table(rows, out):
 # add_default rows).
 REALISTIC = ["lonlat", "coastline", "borders", "lidar", "poisson-disc", "tracks"]
 REALISTIC_IMPLS = ["adaptive-automatic-t1", "adaptive-automatic-t2", "adaptive-radial-t1",
-                   "adaptive-strips-t1", "adaptive-sweep-hull-t1"]
+                   "adaptive-strips-t1", "adaptive-sweep-hull-t1", "adaptive-bowyer-watson-t1"]
 
 
 def realistic(rows, out):
@@ -148,8 +148,8 @@ def realistic(rows, out):
     if not cases:
         return
     out.write("\n## Realistic families\n\n| input | n | CGAL ms | default t1 | default t2 "
-              "| radial | strips | sweep-hull | flips/pt default |\n"
-              "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n")
+              "| radial | strips | sweep-hull | bowyer-watson | flips/pt default |\n"
+              "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n")
     missed, met = [], 0
     for inp, n in cases:
         cg = rows.get((inp, n, CGAL), {})
