@@ -427,13 +427,33 @@ int main(int argc, char** argv) {
             huge = true;
         } else if (a == "--exidel_giant") {
             giant = true;
+        } else if (a.starts_with("--exidel_write=")) {
+            // --exidel_write=FAMILY:N:FILE writes the benchmark's input (FAMILY at N points,
+            // the same seed) as "x y" lines, 17 significant digits (read back exactly), and
+            // exits: the input of bench/end_to_end.py.
+            const std::string spec(a.substr(15));
+            const std::size_t c1 = spec.find(':'), c2 = spec.find(':', c1 + 1);
+            if (c1 == std::string::npos || c2 == std::string::npos) {
+                std::fprintf(stderr, "--exidel_write=FAMILY:N:FILE\n");
+                return 2;
+            }
+            const std::vector<Point2> p =
+                generate(spec.substr(0, c1),
+                         std::strtoull(spec.substr(c1 + 1, c2 - c1 - 1).c_str(), nullptr, 10));
+            std::FILE* out = std::fopen(spec.substr(c2 + 1).c_str(), "w");
+            if (!out) {
+                std::perror(spec.substr(c2 + 1).c_str());
+                return 1;
+            }
+            for (const Point2& q : p) std::fprintf(out, "%.17g %.17g\n", q.x, q.y);
+            return std::fclose(out) == 0 ? 0 : 1;
         } else if (a.starts_with("--exidel_strip_tiles=")) {
             strip_tiles = std::strtoull(a.substr(21).data(), nullptr, 10);
         } else {
             std::fprintf(stderr,
                          "unknown option %s (besides Google Benchmark's: "
                          "--exidel_slow, --exidel_huge, --exidel_giant, "
-                         "--exidel_strip_tiles=N)\n",
+                         "--exidel_strip_tiles=N, --exidel_write=FAMILY:N:FILE)\n",
                          argv[i]);
             return 2;
         }

@@ -308,7 +308,7 @@ int run(const Options& o, const CommandLine& cli) {
     if (node_output) {
         beside.push_back({*node_output, [&](std::ostream& out) {
                               io::write_points(out, points, io::PointFormat::node,
-                                               input->index_base);
+                                               input->index_base, o.threads);
                           }});
     }
     const bool written = steps.write(

@@ -247,6 +247,64 @@ TEST(WriteTriangulation, JsonIsTheSameWithThreads) {
     EXPECT_EQ(back.halfedges, r.triangulation.halfedges);
 }
 
+// The text formats formatted in slices on threads (json above; ele, geojson, wkt, and the
+// points' xy, node and json): the same text for every thread count, across more than one
+// slice of items (2^14) and of formatted positions (2^16 points), with z, negative zero
+// and a point that repeats another.
+TEST(WriteTriangulation, TextFormatsAreTheSameWithThreads) {
+    std::vector<Point2> pts{{-0.0, 0.5}, {-0.0, 0.5}};
+    std::vector<double> z{-0.0, -0.0};
+    for (int i = 0; i < 70000; ++i) {
+        pts.push_back({std::sin(i * 1.3) * i, std::cos(i * 0.7) * i});
+        z.push_back(i * 0.25 - 3);
+    }
+    const delaunay::Result r = delaunay::triangulate(pts, AdaptiveKernel{});
+    ASSERT_TRUE(r.ok());
+    ASSERT_GT(r.triangulation.triangle_count(), 1u << 14);
+    for (const TriangulationFormat f :
+         {TriangulationFormat::ele, TriangulationFormat::geojson, TriangulationFormat::wkt}) {
+        for (const bool with_z : {false, true}) {
+            if (f == TriangulationFormat::ele && with_z) continue;
+            const std::span<const double> zs =
+                with_z ? std::span<const double>(z) : std::span<const double>();
+            std::ostringstream one;
+            write_triangulation(one, pts, r.triangulation, f, WriteOptions{1, 1, zs});
+            for (const unsigned threads : {2u, 3u}) {
+                std::ostringstream many;
+                write_triangulation(many, pts, r.triangulation, f, WriteOptions{1, threads, zs});
+                EXPECT_EQ(many.str(), one.str()) << to_string(f) << " threads " << threads;
+            }
+        }
+    }
+    // Spot checks of the text against the arrays: the last triangle's feature and polygon.
+    std::ostringstream geojson, wkt;
+    write_triangulation(geojson, pts, r.triangulation, TriangulationFormat::geojson,
+                        WriteOptions{0, 2});
+    write_triangulation(wkt, pts, r.triangulation, TriangulationFormat::wkt, WriteOptions{0, 2});
+    const std::size_t last = r.triangulation.triangle_count() - 1;
+    const std::uint32_t* c = r.triangulation.triangles.data() + 3 * last;
+    EXPECT_NE(geojson.str().find("{\"triangle\": " + std::to_string(last) + ", \"vertices\": [" +
+                                 std::to_string(c[0]) + ", " + std::to_string(c[1]) + ", " +
+                                 std::to_string(c[2]) + "]}"),
+              std::string::npos);
+    EXPECT_NE(geojson.str().find("[-0.0, 0.5]"), std::string::npos);
+    EXPECT_EQ(wkt.str().rfind("MULTIPOLYGON (((", 0), 0u);
+    EXPECT_EQ(wkt.str().substr(wkt.str().size() - 4), ")))\n");
+    for (const PointFormat f : {PointFormat::xy, PointFormat::node, PointFormat::json}) {
+        std::ostringstream one, many;
+        write_points(one, pts, f, 1, 1);
+        write_points(many, pts, f, 1, 3);
+        EXPECT_EQ(many.str(), one.str());
+        const std::vector<Point2> back = parse_points(one.str(), f);
+        ASSERT_EQ(back.size(), pts.size());
+        for (std::size_t i = 0; i < pts.size(); ++i) {
+            EXPECT_EQ(back[i].x, pts[i].x) << i;
+            EXPECT_EQ(std::signbit(back[i].x), std::signbit(pts[i].x)) << i;
+            EXPECT_EQ(back[i].y, pts[i].y) << i;
+        }
+    }
+}
+
 TEST(ParseTriangulationJson, RoundTripAndCertify) {
     const std::string json = written(square_triangulation(), TriangulationFormat::json);
     Triangulation t = parse_triangulation_json(json);

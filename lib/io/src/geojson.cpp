@@ -59,22 +59,40 @@ void wkt_position(NumberWriter& w, std::span<const Point2> points, std::span<con
 }  // namespace
 
 void write_triangulation_geojson(std::ostream& out, std::span<const Point2> points,
-                                 const Triangulation& tri, std::span<const double> z) {
+                                 const Triangulation& tri, std::span<const double> z,
+                                 unsigned threads) {
+    const std::size_t n = tri.triangle_count();
+    out << "{\"type\": \"FeatureCollection\", \"features\": [";
+    if (n > 0) {
+        // Each position formatted once ("[x, y]" or "[x, y, z]"), then copied into the
+        // features of the triangles around it.
+        const FormattedPoints positions(points.size(), threads, [&](std::size_t i, TextBuffer& b) {
+            b.append(96, [&](char* p) {
+                p = put_json(put(p, "["), points[i].x);
+                p = put_json(put(p, ", "), points[i].y);
+                if (!z.empty()) p = put_json(put(p, ", "), z[i]);
+                return put(p, "]");
+            });
+        });
+        write_items(out, n, threads, [&](std::size_t t, TextBuffer& b) {
+            const std::uint32_t* c = tri.triangles.data() + 3 * t;
+            const std::string_view p0 = positions[c[0]], p1 = positions[c[1]], p2 = positions[c[2]];
+            b.append(256 + 2 * p0.size() + p1.size() + p2.size(), [&](char* p) {
+                p = put(p, t ? ",\n" : "\n");
+                p = put(p, "{\"type\": \"Feature\", \"properties\": {\"triangle\": ");
+                p = put(p, static_cast<std::uint64_t>(t));
+                p = put(put(p, ", \"vertices\": ["), static_cast<std::uint64_t>(c[0]));
+                p = put(put(p, ", "), static_cast<std::uint64_t>(c[1]));
+                p = put(put(p, ", "), static_cast<std::uint64_t>(c[2]));
+                p = put(p, "]}, \"geometry\": {\"type\": \"Polygon\", \"coordinates\": [[");
+                p = put(put(put(put(p, p0), ", "), p1), ", ");
+                p = put(put(put(put(p, p2), ", "), p0), "]]}}");
+                return p;
+            });
+        });
+    }
     NumberWriter w(out);
     const auto pos = [&](std::uint32_t v) { position(w, points, z, v); };
-    w.text("{\"type\": \"FeatureCollection\", \"features\": [");
-    const std::size_t n = tri.triangle_count();
-    for (std::size_t t = 0; t < n; ++t) {
-        const std::span<const std::uint32_t> corners(tri.triangles.data() + 3 * t, 3);
-        w.text(t ? ",\n" : "\n")
-            .text("{\"type\": \"Feature\", \"properties\": {\"triangle\": ")
-            .number(static_cast<std::uint64_t>(t))
-            .text(", \"vertices\": ");
-        index_array(w, corners);
-        w.text("}, \"geometry\": {\"type\": \"Polygon\", \"coordinates\": ");
-        polygon_coordinates(w, corners, pos);
-        w.text("}}");
-    }
     // The hull: the boundary polygon, or for input without triangles the chain of its
     // distinct points (a LineString), or its one point.
     const std::span<const std::uint32_t> hull(tri.hull);
@@ -103,24 +121,33 @@ void write_triangulation_geojson(std::ostream& out, std::span<const Point2> poin
 }
 
 void write_triangulation_wkt(std::ostream& out, std::span<const Point2> points,
-                             const Triangulation& tri, std::span<const double> z) {
-    NumberWriter w(out);
-    w.text(z.empty() ? "MULTIPOLYGON" : "MULTIPOLYGON Z");
+                             const Triangulation& tri, std::span<const double> z,
+                             unsigned threads) {
+    out << (z.empty() ? "MULTIPOLYGON" : "MULTIPOLYGON Z");
     const std::size_t n = tri.triangle_count();
     if (n == 0) {
-        w.text(" EMPTY\n");
+        out << " EMPTY\n";
         return;
     }
-    w.text(" (");
-    for (std::size_t t = 0; t < n; ++t) {
-        w.text(t ? ",\n(" : "(").text("(");
-        for (std::size_t k = 0; k <= 3; ++k) {
-            if (k) w.text(", ");
-            wkt_position(w, points, z, tri.triangles[3 * t + k % 3]);
-        }
-        w.text("))");
-    }
-    w.text(")\n");
+    out << " (";
+    // Each position ("x y" or "x y z") formatted once, then copied into its triangles.
+    const FormattedPoints positions(points.size(), threads, [&](std::size_t i, TextBuffer& b) {
+        b.append(96, [&](char* p) {
+            p = put(put(put(p, points[i].x), " "), points[i].y);
+            if (!z.empty()) p = put(put(p, " "), z[i]);
+            return p;
+        });
+    });
+    write_items(out, n, threads, [&](std::size_t t, TextBuffer& b) {
+        const std::uint32_t* c = tri.triangles.data() + 3 * t;
+        const std::string_view p0 = positions[c[0]], p1 = positions[c[1]], p2 = positions[c[2]];
+        b.append(32 + 2 * p0.size() + p1.size() + p2.size(), [&](char* p) {
+            p = put(p, t ? ",\n((" : "((");
+            p = put(put(put(put(p, p0), ", "), p1), ", ");
+            return put(put(put(put(p, p2), ", "), p0), "))");
+        });
+    });
+    out << ")\n";
 }
 
 void write_voronoi_geojson(std::ostream& out, const ClippedVoronoi& d, const delaunay::Box& box) {

@@ -575,7 +575,7 @@ FileBytes::~FileBytes() {
 }
 
 void write_points(std::ostream& out, std::span<const Point2> points, PointFormat format,
-                  unsigned index_base) {
+                  unsigned index_base, unsigned threads) {
     if (format == PointFormat::f64) {
         for (const Point2& p : points) {
             for (double v : {p.x, p.y}) {
@@ -588,23 +588,27 @@ void write_points(std::ostream& out, std::span<const Point2> points, PointFormat
         return;
     }
     require_finite(points);
-    detail::NumberWriter w(out);
     if (format == PointFormat::json) {
-        w.text("[");
-        for (std::size_t i = 0; i < points.size(); ++i) {
-            w.text(i ? ",\n [" : "[").number(points[i].x).text(", ").number(points[i].y).text("]");
-        }
-        w.text("]\n");
+        out << "[";
+        detail::write_items(out, points.size(), threads, [&](std::size_t i, detail::TextBuffer& b) {
+            b.append(64, [&](char* p) {
+                p = detail::put(detail::put(p, i ? ",\n [" : "["), points[i].x);
+                return detail::put(detail::put(detail::put(p, ", "), points[i].y), "]");
+            });
+        });
+        out << "]\n";
         return;
     }
-    if (format == PointFormat::node) {
-        w.number(static_cast<std::uint64_t>(points.size())).text(" 2 0 0\n");
-    }
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        if (format == PointFormat::node)
-            w.number(static_cast<std::uint64_t>(i) + index_base).text(" ");
-        w.number(points[i].x).text(" ").number(points[i].y).text("\n");
-    }
+    if (format == PointFormat::node) out << points.size() << " 2 0 0\n";
+    const bool node = format == PointFormat::node;
+    detail::write_items(out, points.size(), threads, [&](std::size_t i, detail::TextBuffer& b) {
+        b.append(96, [&](char* p) {
+            if (node)
+                p = detail::put(detail::put(p, static_cast<std::uint64_t>(i) + index_base), " ");
+            p = detail::put(detail::put(detail::put(p, points[i].x), " "), points[i].y);
+            return detail::put(p, "\n");
+        });
+    });
 }
 
 }  // namespace exidel::io

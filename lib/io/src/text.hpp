@@ -5,11 +5,15 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
+#include <memory>
 #include <ostream>
 #include <span>
 #include <string_view>
+#include <vector>
 
+#include "exidel/delaunay/parallel.hpp"
 #include "exidel/predicates/types.hpp"
 
 namespace exidel::io::detail {
@@ -128,6 +132,104 @@ inline void json_number(NumberWriter& w, double v) {
         w.number(v);
     }
 }
+
+/// Writers into memory reserved beforehand (TextBuffer::append): each returns the end of
+/// what it wrote. A cursor in a local variable stays in a register; members of a buffer
+/// written through a char pointer would be reloaded after every character.
+inline char* put(char* p, std::string_view s) {
+    std::memcpy(p, s.data(), s.size());
+    return p + s.size();
+}
+/// The shortest decimal that reads back as exactly `v` (std::to_chars): at most 24 chars.
+inline char* put(char* p, double v) { return std::to_chars(p, p + 32, v).ptr; }
+inline char* put(char* p, std::uint64_t v) { return std::to_chars(p, p + 32, v).ptr; }
+/// As json_number: negative zero as "-0.0".
+inline char* put_json(char* p, double v) {
+    return v == 0 && std::signbit(v) ? put(p, "-0.0") : put(p, v);
+}
+
+/// Text formatted into memory that grows as needed (by doubling; never zero-filled, as a
+/// resized std::string would be): one slice of a file formatted on its own thread.
+class TextBuffer {
+public:
+    /// Appends what write(char* p) puts at p, at most `most` characters; write returns
+    /// the end of its text.
+    template <class Write>
+    void append(std::size_t most, Write&& write) {
+        if (capacity_ - used_ < most) grow(used_ + most);
+        char* const begin = buf_.get() + used_;
+        used_ += static_cast<std::size_t>(write(begin) - begin);
+    }
+    void clear() { used_ = 0; }
+    std::size_t size() const { return used_; }
+    std::string_view view() const { return {buf_.get(), used_}; }
+
+private:
+    void grow(std::size_t least) {
+        const std::size_t capacity = std::max(2 * capacity_, least + 4096);
+        std::unique_ptr<char[]> bigger(new char[capacity]);
+        if (used_) std::memcpy(bigger.get(), buf_.get(), used_);
+        buf_ = std::move(bigger);
+        capacity_ = capacity;
+    }
+    std::unique_ptr<char[]> buf_;
+    std::size_t capacity_ = 0, used_ = 0;
+};
+
+/// Writes items 0 .. count - 1 to `out` in order, item i formatted by format(i, buffer):
+/// slices of `slice` items are formatted `threads` at a time, each into its own buffer,
+/// then written in order. The text does not depend on `threads`; memory stays bounded by
+/// threads slices.
+template <class Format>
+void write_items(std::ostream& out, std::size_t count, unsigned threads, Format&& format,
+                 std::size_t slice = std::size_t{1} << 14) {
+    const std::size_t workers = std::max(threads, 1u);
+    std::vector<TextBuffer> buffers(std::min(workers, (count + slice - 1) / slice));
+    for (std::size_t round = 0; round < count; round += slice * workers) {
+        const std::size_t slices = std::min(workers, (count - round + slice - 1) / slice);
+        exidel::parallel_for(slices, threads, [&](std::size_t s) {
+            TextBuffer& b = buffers[s];
+            b.clear();
+            const std::size_t begin = round + s * slice, end = std::min(count, begin + slice);
+            for (std::size_t i = begin; i < end; ++i) format(i, b);
+        });
+        for (std::size_t s = 0; s < slices; ++s) {
+            out.write(buffers[s].view().data(), static_cast<std::streamsize>(buffers[s].size()));
+        }
+    }
+}
+
+/// Every point's text formatted once, by format(i, buffer), `threads` slices at a time: for
+/// writers that repeat a point in every item that uses it (a GeoJSON feature per
+/// triangle writes each position about six times).
+class FormattedPoints {
+public:
+    template <class Format>
+    FormattedPoints(std::size_t count, unsigned threads, Format&& format) : start_(count) {
+        const std::size_t slices = (count + slice - 1) / slice;
+        slices_.resize(slices);
+        exidel::parallel_for(slices, threads, [&](std::size_t s) {
+            TextBuffer& b = slices_[s];
+            const std::size_t begin = s * slice, end = std::min(count, begin + slice);
+            for (std::size_t i = begin; i < end; ++i) {
+                start_[i] = static_cast<std::uint32_t>(b.size());
+                format(i, b);
+            }
+        });
+    }
+    std::string_view operator[](std::size_t i) const {
+        const TextBuffer& b = slices_[i / slice];
+        const std::size_t begin = start_[i];
+        const std::size_t end =
+            (i + 1) % slice == 0 || i + 1 == start_.size() ? b.size() : start_[i + 1];
+        return b.view().substr(begin, end - begin);
+    }
+
+private:
+    static constexpr std::size_t slice = std::size_t{1} << 16;  // points: at most a few MB
+    std::vector<std::uint32_t> start_;                          // within its slice's buffer
+    std::vector<TextBuffer> slices_;
+};
 
 /// The part of the plane a picture shows, in data units: [x0, x1] x [y0, y1], finite,
 /// x0 < x1 and y0 < y1.

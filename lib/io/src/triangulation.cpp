@@ -76,17 +76,19 @@ void write_json(std::ostream& out, const Triangulation& tri, unsigned threads) {
     out << "}\n";
 }
 
-void write_ele(std::ostream& out, const Triangulation& tri, std::uint64_t base) {
-    NumberWriter w(out);
+void write_ele(std::ostream& out, const Triangulation& tri, std::uint64_t base, unsigned threads) {
     const std::size_t n = tri.triangle_count();
-    w.number(static_cast<std::uint64_t>(n)).text(" 3 0\n");
-    for (std::size_t t = 0; t < n; ++t) {
-        w.number(t + base);
-        for (std::size_t k = 0; k < 3; ++k) {
-            w.text(" ").number(tri.triangles[3 * t + k] + base);
-        }
-        w.text("\n");
-    }
+    out << n << " 3 0\n";
+    detail::write_items(out, n, threads, [&](std::size_t t, detail::TextBuffer& b) {
+        b.append(96, [&](char* p) {
+            p = detail::put(p, static_cast<std::uint64_t>(t + base));
+            for (std::size_t k = 0; k < 3; ++k) {
+                p = detail::put(detail::put(p, " "),
+                                static_cast<std::uint64_t>(tri.triangles[3 * t + k] + base));
+            }
+            return detail::put(p, "\n");
+        });
+    });
 }
 
 void write_off(std::ostream& out, std::span<const Point2> points, const Triangulation& tri,
@@ -310,12 +312,14 @@ void write_triangulation(std::ostream& out, std::span<const Point2> points,
     }
     switch (format) {
         case TriangulationFormat::json: return write_json(out, tri, options.threads);
-        case TriangulationFormat::ele: return write_ele(out, tri, options.index_base);
+        case TriangulationFormat::ele:
+            return write_ele(out, tri, options.index_base, options.threads);
         case TriangulationFormat::off: return write_off(out, points, tri, z);
         case TriangulationFormat::svg: return write_svg(out, points, tri);
         case TriangulationFormat::geojson:
-            return detail::write_triangulation_geojson(out, points, tri, z);
-        case TriangulationFormat::wkt: return detail::write_triangulation_wkt(out, points, tri, z);
+            return detail::write_triangulation_geojson(out, points, tri, z, options.threads);
+        case TriangulationFormat::wkt:
+            return detail::write_triangulation_wkt(out, points, tri, z, options.threads);
         case TriangulationFormat::ply:
             return detail::write_triangulation_ply(out, points, tri, z, true);
         case TriangulationFormat::ply_ascii:

@@ -11,11 +11,14 @@
 
 namespace exidel::io::detail {
 
-/// `z` is empty (2D positions) or has one value per point.
+/// `z` is empty (2D positions) or has one value per point. `threads` format parts of the
+/// file at once (the text is the same for every count).
 void write_triangulation_geojson(std::ostream& out, std::span<const Point2> points,
-                                 const delaunay::Triangulation& tri, std::span<const double> z);
+                                 const delaunay::Triangulation& tri, std::span<const double> z,
+                                 unsigned threads = 1);
 void write_triangulation_wkt(std::ostream& out, std::span<const Point2> points,
-                             const delaunay::Triangulation& tri, std::span<const double> z);
+                             const delaunay::Triangulation& tri, std::span<const double> z,
+                             unsigned threads = 1);
 void write_triangulation_ply(std::ostream& out, std::span<const Point2> points,
                              const delaunay::Triangulation& tri, std::span<const double> z,
                              bool binary);

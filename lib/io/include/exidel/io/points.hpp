@@ -149,8 +149,9 @@ private:
 
 /// Writes `points` in `format`, so that parse_points gives the same doubles back
 /// (text coordinates are the shortest decimal that rounds back exactly; node has no
-/// attributes or markers and numbers its vertices from `index_base`, 0 or 1).
+/// attributes or markers and numbers its vertices from `index_base`, 0 or 1). `threads`
+/// format parts of a text file at once (the text is the same for every count).
 void write_points(std::ostream& out, std::span<const Point2> points, PointFormat format,
-                  unsigned index_base = 0);
+                  unsigned index_base = 0, unsigned threads = 1);
 
 }  // namespace exidel::io

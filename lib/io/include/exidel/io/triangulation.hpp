@@ -85,7 +85,8 @@ std::optional<TriangulationFormat> triangulation_format_from_path(std::string_vi
 
 struct WriteOptions {
     unsigned index_base = 0;  // ele: the number of the first vertex and triangle (0 or 1)
-    /// json: threads that format parts of the arrays at once (the text is the same).
+    /// json, ele, geojson, wkt: threads that format parts of the file at once (the text
+    /// is the same for every count).
     unsigned threads = 1;
     /// off, geojson, wkt, ply: a z value per point (PointFile::z), or empty for none.
     std::span<const double> z{};
