@@ -111,8 +111,9 @@ Options:
                           used by the insertions, the strips' merges always use the
                           determinant)
       --order ORDER       auto|lexicographic|radial|strips (default auto)
-      --threads N         threads for --order strips/auto (default: the hardware's
-                          thread count)
+      --threads N         threads for --order strips/auto, for reading and for
+                          formatting text output (default: the hardware's thread
+                          count; the output does not depend on it)
       --strip-points N    points per strip (default: chosen by input size); strips
                           grow until their points are not all on one line
       --strip-tiles N     cut each strip across into N tiles of --strip-points
