@@ -108,6 +108,82 @@ TEST(ReadXy, ErrorsNameTheLine) {
     expect_error("x y\nx y\n", PointFormat::xy, 2, "not a number");
 }
 
+// The common "x y" line has a fast path (points.cpp, simple_xy); a comment on a line
+// sends it down the general path. Lines of tricky tokens and separators, read with and
+// without a comment: the same doubles (to the bit) or the same error.
+TEST(ReadXy, FastPathReadsAsTheGeneralPath) {
+    const std::vector<std::string> tokens{"0",
+                                          "-0",
+                                          "1",
+                                          "-1.5",
+                                          ".5",
+                                          "-.5",
+                                          "5.",
+                                          "1e5",
+                                          "1E-5",
+                                          "-2.5e+3",
+                                          "1e400",
+                                          "1e-400",
+                                          "4.9e-324",
+                                          "0x1p3",
+                                          "-0x1.8p1",
+                                          "+1",
+                                          "+.5",
+                                          "nan",
+                                          "-inf",
+                                          "Infinity",
+                                          "1.5e",
+                                          ".",
+                                          "-",
+                                          "--1",
+                                          "1_2",
+                                          "12abc",
+                                          "0.1000000000000000055511151231257827",
+                                          "9007199254740993",
+                                          "\"3\"",
+                                          "",
+                                          "1,5"};
+    const std::vector<std::string> separators{" ", "\t", ",", " , ", ",  ", "  ", "", ",,"};
+    std::mt19937_64 rng(49);
+    const auto pick = [&](const std::vector<std::string>& v) { return v[rng() % v.size()]; };
+    std::size_t read = 0, refused = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const std::string line = (rng() % 4 == 0 ? " " : "") + pick(tokens) + pick(separators) +
+                                 pick(tokens) + (rng() % 4 == 0 ? " \t" : "");
+        std::optional<Points> fast, general;
+        std::string fast_error, general_error;
+        try {
+            fast = parse_points("0 0\n" + line + "\n", PointFormat::xy);
+        } catch (const ReadError& e) {
+            fast_error = e.what();
+        }
+        try {
+            general = parse_points("0 0\n" + line + " # comment\n", PointFormat::xy);
+        } catch (const ReadError& e) {
+            general_error = e.what();
+        }
+        ASSERT_EQ(fast.has_value(), general.has_value())
+            << "'" << line << "': " << fast_error << " | " << general_error;
+        if (!fast) {
+            EXPECT_EQ(fast_error, general_error) << "'" << line << "'";
+            ++refused;
+            continue;
+        }
+        ++read;
+        ASSERT_EQ(fast->size(), general->size()) << line;
+        for (std::size_t k = 0; k < fast->size(); ++k) {
+            EXPECT_EQ(std::bit_cast<std::uint64_t>((*fast)[k].x),
+                      std::bit_cast<std::uint64_t>((*general)[k].x))
+                << "'" << line << "'";
+            EXPECT_EQ(std::bit_cast<std::uint64_t>((*fast)[k].y),
+                      std::bit_cast<std::uint64_t>((*general)[k].y))
+                << "'" << line << "'";
+        }
+    }
+    EXPECT_GT(read, 1000u);  // both kinds of line were drawn many times
+    EXPECT_GT(refused, 1000u);
+}
+
 TEST(ReadXy, ByteOrderMarkAndQuotedFields) {
     // A spreadsheet's CSV export: a UTF-8 byte order mark, quoted header and values.
     const Points p =

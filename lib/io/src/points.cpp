@@ -129,6 +129,45 @@ struct XyLayout {
     bool columns = false;  // chosen by ReadOptions::columns
 };
 
+// The common line "x y" or "x,y" (blanks around, plain decimals) read without splitting
+// it into fields: true with `p` set, or false for anything else (a sign '+', hex, a
+// comment, quotes, a third field, an error), which the general path then reads or
+// reports. Where it answers, it answers as the general path does: a field starting with a
+// digit, '.', or '-' and one of those is exactly what parse_double hands to
+// std::from_chars (its sign taken off and put back, which changes no bit), and a value
+// from_chars reports in range is finite.
+bool simple_xy(std::string_view line, Point2& p) {
+    const char* c = line.data();
+    const char* const end = c + line.size();
+    const auto skip = [&] {
+        while (c != end && is_blank(*c)) ++c;
+    };
+    const auto starts_number = [&] {
+        const auto digit_or_point = [](char d) { return (d >= '0' && d <= '9') || d == '.'; };
+        return c != end &&
+               (digit_or_point(*c) || (*c == '-' && c + 1 != end && digit_or_point(c[1])));
+    };
+    skip();
+    if (!starts_number()) return false;
+    auto r = std::from_chars(c, end, p.x);
+    if (r.ec != std::errc{}) return false;
+    c = r.ptr;
+    const char* const after_x = c;
+    skip();
+    if (c != end && *c == ',') {
+        ++c;
+        skip();
+    } else if (c == after_x) {
+        return false;  // no separator: "1.5e" or "0x1"
+    }
+    if (!starts_number()) return false;
+    r = std::from_chars(c, end, p.y);
+    if (r.ec != std::errc{}) return false;
+    c = r.ptr;
+    skip();
+    return c == end;
+}
+
 // Parses the data lines of `data` (line numbers counted from 1) into out[0, ...) (and their
 // z into z_out[0, ...) when the layout has z); returns how many points it wrote (at most
 // one per line).
@@ -137,7 +176,12 @@ std::size_t parse_xy_lines(std::string_view data, const XyLayout& layout, Point2
     std::vector<std::string_view> fields;
     std::string error;
     std::size_t written = 0;
+    const bool plain = !layout.columns && !layout.has_z && layout.width == 2;
     for_each_line(data, [&](std::size_t number, std::string_view line) {
+        if (plain && simple_xy(line, out[written])) {
+            ++written;
+            return;
+        }
         if (!split_fields(strip_comment(line), fields, error, true, layout.columns)) {
             throw ReadError::at_line(number, error);
         }
