@@ -78,7 +78,7 @@ handling).
         (all distinct points in order when they are collinear)
   ele   Triangle's .ele: "ntriangles 3 0", then "t v0 v1 v2"; -o FILE.ele also
         writes the points as FILE.node beside it (Triangle's pair, same numbering)
-        unless FILE.node is the input itself
+        unless FILE.node is the input itself or FILE a device or pipe
   off   OFF with the input's z, else z = 0 (every input point is a vertex,
         duplicates included)
   svg   a picture: triangles, hull in red, points; in the data's coordinates (the
@@ -230,6 +230,12 @@ bool same_file(const std::string& a, const std::string& b) {
            sa.st_ino == sb.st_ino;
 }
 
+// Is `path` a regular file, or nothing yet (not a device, pipe or directory)?
+bool regular_or_new(const std::string& path) {
+    struct stat st {};
+    return ::stat(path.c_str(), &st) != 0 || S_ISREG(st.st_mode);
+}
+
 // Prints the certifier's findings on `err`, one per line.
 void print_findings(std::ostream& err, const delaunay::Certificate& c) {
     for (const delaunay::Finding& f : c.findings) {
@@ -254,7 +260,9 @@ int run(const Options& o, const CommandLine& cli) {
     // The output files exist (as temporaries) from here on, removed again on any failure.
     std::optional<PendingFile> output, node_output;
     if (!o.open_output(output)) return exit_failure;
-    if (output && *format == io::TriangulationFormat::ele) {
+    // A device or a pipe as the output (-o /dev/null --format ele) gets no .node beside it:
+    // that would be a new regular file in /dev.
+    if (output && *format == io::TriangulationFormat::ele && regular_or_new(output->path())) {
         const std::string& out = *o.output;
         const std::string node =
             (out.ends_with(".ele") ? out.substr(0, out.size() - 4) : out) + ".node";

@@ -544,6 +544,11 @@ TEST(ExidelTriangulate, EleComesWithANodeFileOfTheSameBase) {
     EXPECT_EQ(
         io::parse_point_file(slurp(work_path("based-xy.node")), io::PointFormat::node).index_base,
         0u);
+    // A device as the output: nothing beside it (there was a /dev/null.node).
+    std::remove("/dev/null.node");
+    ASSERT_EQ(run("-i " + xy + " -o /dev/null --format ele").status, 0);
+    struct stat st {};
+    EXPECT_NE(::stat("/dev/null.node", &st), 0);
 }
 
 TEST(ExidelTriangulate, ColumnsPickFieldsOfAWiderCsv) {
