@@ -138,7 +138,7 @@ std::ofstream PendingFile::open() const {
 }
 
 void PendingFile::commit() {
-    if (temp_ == path_) return;  // written in place
+    if (in_place()) return;
     if (slot_ < 0) throw std::logic_error("PendingFile: committed twice");
     if (std::rename(temp_.c_str(), path_.c_str()) != 0) {
         throw std::runtime_error("cannot rename the temporary file to '" + path_ +

@@ -28,6 +28,9 @@ public:
 
     /// The file written: the path given, with symbolic links at its end followed.
     const std::string& path() const noexcept { return path_; }
+    /// True for a device or a pipe (/dev/null, a FIFO), written in place, not through a
+    /// temporary file.
+    bool in_place() const noexcept { return temp_ == path_; }
 
     /// Opens the temporary file for writing (truncated), binary.
     std::ofstream open() const;

@@ -230,12 +230,6 @@ bool same_file(const std::string& a, const std::string& b) {
            sa.st_ino == sb.st_ino;
 }
 
-// Is `path` a regular file, or nothing yet (not a device, pipe or directory)?
-bool regular_or_new(const std::string& path) {
-    struct stat st {};
-    return ::stat(path.c_str(), &st) != 0 || S_ISREG(st.st_mode);
-}
-
 // Prints the certifier's findings on `err`, one per line.
 void print_findings(std::ostream& err, const delaunay::Certificate& c) {
     for (const delaunay::Finding& f : c.findings) {
@@ -262,7 +256,7 @@ int run(const Options& o, const CommandLine& cli) {
     if (!o.open_output(output)) return exit_failure;
     // A device or a pipe as the output (-o /dev/null --format ele) gets no .node beside it:
     // that would be a new regular file in /dev.
-    if (output && *format == io::TriangulationFormat::ele && regular_or_new(output->path())) {
+    if (output && *format == io::TriangulationFormat::ele && !output->in_place()) {
         const std::string& out = *o.output;
         const std::string node =
             (out.ends_with(".ele") ? out.substr(0, out.size() - 4) : out) + ".node";

@@ -228,7 +228,7 @@ TEST(WriteTriangulation, SvgPathsStayShortForXmlParsers) {
 }
 
 TEST(WriteTriangulation, JsonIsTheSameWithThreads) {
-    // More numbers than one slice of the parallel writer (2^17) in triangles and halfedges.
+    // More numbers than one slice of the parallel writer (2^14) in triangles and halfedges.
     std::vector<Point2> pts;
     for (int i = 0; i < 30000; ++i) pts.push_back({std::sin(i * 1.3) * i, std::cos(i * 0.7) * i});
     const delaunay::Result r = delaunay::triangulate(pts, AdaptiveKernel{});

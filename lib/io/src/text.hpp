@@ -176,13 +176,13 @@ private:
     std::size_t capacity_ = 0, used_ = 0;
 };
 
-/// Writes items 0 .. count - 1 to `out` in order, item i formatted by format(i, buffer):
-/// slices of `slice` items are formatted `threads` at a time, each into its own buffer,
-/// then written in order. The text does not depend on `threads`; memory stays bounded by
-/// threads slices.
-template <class Format>
-void write_items(std::ostream& out, std::size_t count, unsigned threads, Format&& format,
-                 std::size_t slice = std::size_t{1} << 14) {
+/// Writes items 0 .. count - 1 to `out` in order, items [begin, end) formatted by
+/// format(begin, end, buffer): slices of `slice` items are formatted `threads` at a time,
+/// each into its own buffer, then written in order. The text does not depend on
+/// `threads`; memory stays bounded by threads slices.
+template <class FormatRange>
+void write_slices(std::ostream& out, std::size_t count, unsigned threads, std::size_t slice,
+                  FormatRange&& format) {
     const std::size_t workers = std::max(threads, 1u);
     std::vector<TextBuffer> buffers(std::min(workers, (count + slice - 1) / slice));
     for (std::size_t round = 0; round < count; round += slice * workers) {
@@ -190,13 +190,23 @@ void write_items(std::ostream& out, std::size_t count, unsigned threads, Format&
         exidel::parallel_for(slices, threads, [&](std::size_t s) {
             TextBuffer& b = buffers[s];
             b.clear();
-            const std::size_t begin = round + s * slice, end = std::min(count, begin + slice);
-            for (std::size_t i = begin; i < end; ++i) format(i, b);
+            const std::size_t begin = round + s * slice;
+            format(begin, std::min(count, begin + slice), b);
         });
         for (std::size_t s = 0; s < slices; ++s) {
             out.write(buffers[s].view().data(), static_cast<std::streamsize>(buffers[s].size()));
         }
     }
+}
+
+/// write_slices with item i formatted by format(i, buffer).
+template <class Format>
+void write_items(std::ostream& out, std::size_t count, unsigned threads, Format&& format,
+                 std::size_t slice = std::size_t{1} << 14) {
+    write_slices(out, count, threads, slice,
+                 [&](std::size_t begin, std::size_t end, TextBuffer& b) {
+                     for (std::size_t i = begin; i < end; ++i) format(i, b);
+                 });
 }
 
 /// Every point's text formatted once, by format(i, buffer), `threads` slices at a time: for

@@ -6,7 +6,6 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
-#include <memory>
 #include <numeric>
 #include <ostream>
 #include <stdexcept>
@@ -25,42 +24,22 @@ namespace {
 using delaunay::Triangulation;
 using detail::NumberWriter;
 
-// Formats v[begin, end) as comma-separated integers (a comma before each but the first
-// of the whole array) into `text`, which has room for 12 characters per number
-// ("-2147483648," or "4294967295," at most); returns the length.
-template <class T>
-std::size_t format_integers(const std::vector<T>& v, std::size_t begin, std::size_t end,
-                            char* text) {
-    char* p = text;
-    for (std::size_t i = begin; i < end; ++i) {
-        if (i) *p++ = ',';
-        p = std::to_chars(p, text + 12 * (end - begin), v[i]).ptr;
-    }
-    return static_cast<std::size_t>(p - text);
-}
-
-// "[v0,v1,...]": formatted in slices, `threads` slices at a time, written in order. The
-// formatting is most of a large file's write time; the slices keep memory bounded. The
-// buffers are not std::string: resizing one zero-fills it, a pass as long as the writing.
+// "[v0,v1,...]", formatted in slices of 2^17 numbers (about 1 MB of text) on `threads`
+// threads (detail::write_slices), each slice in one tight loop.
 template <class T>
 void json_array(std::ostream& out, const std::vector<T>& v, unsigned threads) {
-    constexpr std::size_t slice = 1 << 17;  // numbers per slice: about 1 MB of text
-    const std::size_t workers = std::max(threads, 1u);
-    const std::size_t buffers = std::min(workers, (v.size() + slice - 1) / slice);
-    std::vector<std::unique_ptr<char[]>> text(buffers);
-    for (auto& t : text) t.reset(new char[12 * slice]);
-    std::vector<std::size_t> length(buffers);
     out.put('[');
-    for (std::size_t round = 0; round < v.size(); round += slice * workers) {
-        const std::size_t slices = std::min(workers, (v.size() - round + slice - 1) / slice);
-        exidel::parallel_for(slices, threads, [&](std::size_t s) {
-            const std::size_t begin = round + s * slice;
-            length[s] = format_integers(v, begin, std::min(v.size(), begin + slice), text[s].get());
-        });
-        for (std::size_t s = 0; s < slices; ++s) {
-            out.write(text[s].get(), static_cast<std::streamsize>(length[s]));
-        }
-    }
+    detail::write_slices(out, v.size(), threads, std::size_t{1} << 17,
+                         [&](std::size_t begin, std::size_t end, detail::TextBuffer& b) {
+                             b.append(12 * (end - begin), [&](char* p) {
+                                 char* const last = p + 12 * (end - begin);
+                                 for (std::size_t i = begin; i < end; ++i) {
+                                     if (i) *p++ = ',';
+                                     p = std::to_chars(p, last, v[i]).ptr;
+                                 }
+                                 return p;
+                             });
+                         });
     out.put(']');
 }
 
