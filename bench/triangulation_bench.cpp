@@ -246,6 +246,7 @@ struct Untimed {
     double flips_per_pt = -1;  // -1: not measured (CGAL)
     double bytes_per_pt = 0;
     double strips = 0;
+    double cavity_pieces = 0;
     std::string ran;  // the strategy that ran
     std::string failure;
 };
@@ -264,6 +265,7 @@ void report(benchmark::State& state, std::size_t n, const Untimed& u) {
     if (u.flips_per_pt >= 0) {
         state.counters["flips_per_pt"] = u.flips_per_pt;
         state.counters["strips"] = u.strips;
+        state.counters["cavity_pieces"] = u.cavity_pieces;
         state.SetLabel(u.ran);
     }
 }
@@ -284,6 +286,7 @@ void exidel_bench(benchmark::State& state, const std::string& name, const std::s
         }
         r.flips_per_pt = static_cast<double>(counted.counters.flips()) / static_cast<double>(count);
         r.strips = static_cast<double>(counted.strips);
+        r.cavity_pieces = static_cast<double>(counted.cavity_pieces);
         // The label names the strategy that ran, for an algorithm that takes one.
         const bool takes_order =
             std::any_of(delaunay::algorithms().begin(), delaunay::algorithms().end(),

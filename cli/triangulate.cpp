@@ -55,7 +55,9 @@ ones, so no point location is needed. Its order of insertion (--order):
                  with --strip-tiles) each strip cut across into tiles first
   auto           (default) radial below 32768 points and on points along a convex
                  curve (a sampled hull test: parabolas, ellipses, not circles),
-                 strips otherwise
+                 strips otherwise; a radial run that erodes more than 14 edges
+                 per point (curves crossing the sweep: GPS tracks) gives up and
+                 its points are inserted by cavities in BRIO order instead
 Every order gives a Delaunay triangulation with an exact kernel, and the same one when
 no four points are cocircular; the thread count never changes the output.
 
@@ -209,6 +211,7 @@ void print_stats(std::ostream& err, std::size_t points, const delaunay::Result& 
                          ? nlohmann::ordered_json(delaunay::to_string(r.strategy))
                          : nlohmann::ordered_json()},
         {"strips", r.strips},
+        {"cavity_pieces", r.cavity_pieces},
         {"threads", threads},
         {"instrumentation", "counters"},
         {"counters", counters},

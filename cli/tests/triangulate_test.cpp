@@ -411,6 +411,7 @@ TEST(ExidelTriangulate, StatsIsOneJsonObjectWithEveryKey) {
                             "algorithm",
                             "strategy",
                             "strips",
+                            "cavity_pieces",
                             "threads",
                             "failure",
                             "read_ms",
@@ -420,7 +421,7 @@ TEST(ExidelTriangulate, StatsIsOneJsonObjectWithEveryKey) {
                             "total_ms"}) {
         EXPECT_TRUE(v.count(key)) << key << " missing in " << r.err;
     }
-    EXPECT_EQ(v.size(), 37u) << r.err;
+    EXPECT_EQ(v.size(), 38u) << r.err;
     EXPECT_EQ(v.at("failure"), "null");
     EXPECT_EQ(v.at("threads"), "1");  // radial runs on one thread whatever --threads says
     EXPECT_GE(std::stod(v.at("total_ms")), std::stod(v.at("triangulate_ms")));

@@ -218,7 +218,7 @@ class Delaunay:
       vertex_of_input  (n,) int32, the first occurrence of each input point
       collinear   True when there are no triangles (fewer than three distinct points or
                   all on one line)
-      stats       algorithm, order, strips, sizes (and counters when asked)
+      stats       algorithm, order, strips, cavity_pieces, sizes (and counters when asked)
     Unlike scipy, no point is ever left out (.coplanar is always empty except for the
     duplicates, which scipy also reports there) and nothing is joggled. The arrays computed
     from the triangles (neighbors, transform, equations, vertex_to_simplex, ...) are built
@@ -251,7 +251,8 @@ class Delaunay:
         self.kernel = _core.kernel_name(kernel)
         self._mutable = None  # add_points' triangulation, made on first use
         self._adopt(points, r)
-        self.stats.update(algorithm=r["algorithm"], order=r["strategy"], strips=r["strips"])
+        self.stats.update(algorithm=r["algorithm"], order=r["strategy"], strips=r["strips"],
+                          cavity_pieces=r.get("cavity_pieces", 0))
         if counters and "counters" in r:
             self.stats["counters"] = r["counters"]
 

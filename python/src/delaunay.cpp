@@ -74,6 +74,7 @@ py::dict result_dict(delaunay::Result&& r, bool counters) {
     d["algorithm"] = std::string(delaunay::to_string(r.algorithm));
     d["strategy"] = std::string(delaunay::to_string(r.strategy));
     d["strips"] = r.strips;
+    d["cavity_pieces"] = r.cavity_pieces;
     if (counters) d["counters"] = counters_dict(r.counters);
     if (r.failure) {
         const delaunay::Failure& f = *r.failure;

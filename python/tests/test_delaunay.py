@@ -163,6 +163,9 @@ def test_stats_and_counters(rng):
     assert tri.stats["triangles"] == tri.nsimplex and tri.stats["kernel"] == "adaptive"
     assert tri.stats["counters"]["incircle_tests"] > 500
     assert "counters" not in exidel.Delaunay(rng.random((10, 2))).stats
+    # Uniform points never make auto give a radial run up to cavity insertion (the C++
+    # test DelaunayAutomatic.RunsThatErodeTooMuchAreInsertedByCavities shows one that does).
+    assert tri.stats["cavity_pieces"] == 0
 
 
 def test_certify_finds_what_is_wrong(rng):

@@ -375,6 +375,64 @@ TEST(DelaunayAutomatic, RadialOnAConvexCurveStripsElsewhere) {
     }
 }
 
+// GPS tracks (points along many curves that cross any sweep) make a radial run erode about
+// 28 edges per point at 3000 points; `automatic` gives such a run up and inserts the points by
+// cavities (external.hpp, automatic_erosion_limit), in the one radial run below 2^15 points and
+// per strip above. Requested orders never give up; Poisson-disc points (about 4 per point)
+// never do. The result is certified, agrees with CGAL and with the requested radial order on
+// every edge CGAL forces, and does not depend on the thread count.
+TEST(DelaunayAutomatic, RunsThatErodeTooMuchAreInsertedByCavities) {
+    using exidel::testing::Realistic;
+    for (const std::size_t n : {std::size_t{3000}, std::size_t{120000}}) {
+        const auto tracks = exidel::testing::realistic_points(Realistic::tracks, n, 11);
+        const EdgeSets oracle = test::cgal_edge_sets(tracks);
+        std::vector<std::uint32_t> first;
+        for (const unsigned threads : {1u, 2u}) {
+            const Result r = triangulate(tracks, AdaptiveKernel{}, Options{}.with_threads(threads));
+            ASSERT_TRUE(r.ok()) << r.failure->message;
+            EXPECT_EQ(r.strategy, n < automatic_strips_from ? Strategy::radial : Strategy::strips);
+            EXPECT_GE(r.cavity_pieces, 1u) << n;
+            EXPECT_LE(r.cavity_pieces, r.strips) << n;
+            EXPECT_TRUE(certify(tracks, r.triangulation).ok()) << n;
+            EXPECT_EQ(test::edge_sets(tracks, r.triangulation).forced, oracle.forced) << n;
+            if (threads == 1) {
+                first = r.triangulation.triangles;
+            } else {
+                EXPECT_EQ(r.triangulation.triangles, first) << n;
+            }
+        }
+        const Strategy requested = n < automatic_strips_from ? Strategy::radial : Strategy::strips;
+        const Result plain = triangulate<Instrumentation::counters>(
+            tracks, AdaptiveKernel{}, Options{}.with_strategy(requested));
+        ASSERT_TRUE(plain.ok()) << plain.failure->message;
+        EXPECT_EQ(plain.cavity_pieces, 0u);
+        EXPECT_EQ(plain.counters.location_steps, 0u);  // no cavity insertion ran
+        EXPECT_GT(plain.counters.eroded_edges, automatic_erosion_limit * n / 2)
+            << "the family no longer erodes enough to exercise the fallback";
+        EXPECT_EQ(test::edge_sets(tracks, plain.triangulation).forced, oracle.forced) << n;
+    }
+    const auto poisson =
+        exidel::testing::realistic_points(exidel::testing::Realistic::poisson_disc, 120000, 11);
+    const Result r = triangulate(poisson, AdaptiveKernel{});
+    ASSERT_TRUE(r.ok()) << r.failure->message;
+    EXPECT_EQ(r.cavity_pieces, 0u);
+}
+
+// The fallback with an inexact kernel: a result or a typed failure, never a crash.
+TEST(DelaunayAutomatic, CavityFallbackWithTheDoubleKernelFailsCleanly) {
+    for (const auto& f : exidel::testing::realistic_families()) {
+        const auto pts = exidel::testing::realistic_points(f.family, 3000, 5);
+        const Result r = triangulate(pts, DoubleKernel{});
+        if (!r.ok()) {
+            EXPECT_FALSE(r.failure->message.empty()) << f.name;
+            continue;
+        }
+        const Certificate c = certify(pts, r.triangulation);
+        EXPECT_FALSE(c.has(FindingKind::bad_shape)) << f.name;
+        EXPECT_FALSE(c.has(FindingKind::index_out_of_range)) << f.name;
+    }
+}
+
 // ---- radial order ------------------------------------------------------------------------
 
 // A sampled convex curve: the paper's order is quadratic on the branch it inserts towards

@@ -11,6 +11,17 @@ namespace exidel::delaunay {
 /// Below this many points `automatic` runs one radial pass; from it, strips.
 inline constexpr std::size_t automatic_strips_from = std::size_t{1} << 15;
 
+/// Eroded edges per point beyond which `automatic` gives up a piece's radial run (or its
+/// one radial run) and inserts its points by cavities in BRIO order (Bowyer-Watson,
+/// detail/bowyer_watson.hpp). Points along many curves that run across the sweep (GPS
+/// tracks, coastlines, borders) make every sweep order fan each new point to a far hull
+/// vertex and erode that fan again at the next point; the cavity insertion's order is
+/// blind to that. The value is measured (docs/benchmarks.md, "Realistic families"): a
+/// cavity insertion costs about what a radial run eroding 10 to 14 edges per point costs,
+/// and a limit of 8 to 12 also gave up runs that erode heavily only at their start
+/// (quantized borders of 10^4 points ran 20-40% slower for it).
+inline constexpr std::size_t automatic_erosion_limit = 14;
+
 /// Points per strip when Options::strip_points is 0: the fastest on uniform input at
 /// every size measured (docs/measurements.md): a strip's arrays stay cache-sized, and
 /// the merges cost little.

@@ -226,6 +226,9 @@ struct Result {
     Strategy strategy =
         Strategy::lexicographic;  ///< external: the strategy that ran (never automatic)
     std::size_t strips = 1;       ///< pieces merged (1 unless strips ran): strips, or their tiles
+    /// external, automatic: pieces (or the one radial run) whose radial insertion gave up
+    /// on too many flips and were inserted by cavities instead (external.hpp)
+    std::size_t cavity_pieces = 0;
     bool ok() const noexcept { return !failure.has_value(); }
 };
 

@@ -70,11 +70,15 @@ template <PredicateKernel K, Instrumentation I, InCirclePolicy P>
 class CavityInserter : Counting<I> {
 public:
     /// `pts` distinct, in insertion order; `input_of` maps a position to its input index.
-    /// run() may swap the third point of the first triangle into position 2 (both spans).
-    CavityInserter(const K& kernel, std::span<Point2> pts, std::span<std::uint32_t> input_of)
+    /// run() may swap the third point of the first triangle into position 2 (in `pts`,
+    /// `input_of` and, when not empty, `along`: another array of the same size, kept in
+    /// step).
+    CavityInserter(const K& kernel, std::span<Point2> pts, std::span<std::uint32_t> input_of,
+                   std::span<std::uint32_t> along = {})
         : k_(kernel),
           pts_(pts),
           input_of_(input_of),
+          along_(along),
           inf_(static_cast<std::uint32_t>(pts.size())) {}
 
     /// Builds into `mesh` (replaced). On failure the mesh is meaningless.
@@ -131,12 +135,13 @@ private:
             this->count(&Counters::seed_orientations);
             const Sign s = k_.orient2d(pts_[0], pts_[1], pts_[j]);
             if (s == Sign::zero) continue;
-            std::swap(pts_[2], pts_[j]);
-            std::swap(input_of_[2], input_of_[j]);
-            if (s == Sign::negative) {
-                std::swap(pts_[1], pts_[2]);
-                std::swap(input_of_[1], input_of_[2]);
-            }
+            auto swap = [&](std::size_t a, std::size_t b) {
+                std::swap(pts_[a], pts_[b]);
+                std::swap(input_of_[a], input_of_[b]);
+                if (!along_.empty()) std::swap(along_[a], along_[b]);
+            };
+            swap(2, j);
+            if (s == Sign::negative) swap(1, 2);
             return true;
         }
         return false;
@@ -318,10 +323,12 @@ private:
     }
 
     // The sphere back to a plane triangulation: each ghost (x, y, inf) names hull edge
-    // y -> x, whose finite half-edge becomes a boundary edge (-1); the ghosts go.
+    // y -> x, whose finite half-edge becomes a boundary edge (-1); the ghosts go. A
+    // vertex off the hull has hull_next `dead`, as in the external algorithm's meshes.
     void finish() {
         Mesh& m = *m_;
         m.hull_size = 0;
+        std::fill(m.hull_next.begin(), m.hull_next.end(), dead);
         const std::size_t slots = m.triangles.size() / 3;
         for (std::size_t t = 0; t < slots; ++t) {
             if (m.triangles[3 * t] == dead || !is_ghost(t)) continue;
@@ -345,6 +352,7 @@ private:
     const K& k_;
     std::span<Point2> pts_;
     std::span<std::uint32_t> input_of_;
+    std::span<std::uint32_t> along_;
     const std::uint32_t inf_;
     Mesh* m_ = nullptr;
     std::uint32_t last_ = 0;   // a finite triangle made by the last insertion

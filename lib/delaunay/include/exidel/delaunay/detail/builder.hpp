@@ -53,6 +53,8 @@
 #include <utility>
 #include <vector>
 
+#include "exidel/delaunay/detail/bowyer_watson.hpp"
+#include "exidel/delaunay/detail/brio.hpp"
 #include "exidel/delaunay/detail/counting.hpp"
 #include "exidel/delaunay/detail/flips.hpp"
 #include "exidel/delaunay/detail/hull_start.hpp"
@@ -100,9 +102,26 @@ public:
         seed(first_off);
         for (std::size_t i = first_off + 1; i < n; ++i) {
             if (auto failure = insert(static_cast<std::uint32_t>(i))) return failure;
+            // Past half the points, finishing costs less than starting again.
+            if (erosion_limit_ != 0 && 2 * i <= n &&
+                eroded_total_ > erosion_limit_ * i + erosion_slack) {
+                gave_up_ = true;
+                return std::nullopt;
+            }
         }
         return std::nullopt;
     }
+
+    /// Makes run() give up, with no failure and gave_up() true, as soon as the edges
+    /// eroded so far exceed `per_point` times the points inserted plus erosion_slack,
+    /// while at most half the points are inserted. 0: never (the default). The mesh is then
+    /// unfinished, and the caller triangulates the points another way (build_radial).
+    void limit_erosion(std::size_t per_point) noexcept { erosion_limit_ = per_point; }
+    bool gave_up() const noexcept { return gave_up_; }
+
+    /// Eroded edges a run may spend beyond the per-point limit: room for a costly start
+    /// (the first points' fans are re-eroded as the hull grows) before the rate counts.
+    static constexpr std::size_t erosion_slack = 4096;
 
     const Counters& counters() const noexcept { return this->counters_; }
 
@@ -313,6 +332,7 @@ private:
         set_next(i, upper);
         m_->hull_size = m_->hull_size + 2 - visible;
         last_ = i;
+        eroded_total_ += eroded;
         return std::nullopt;
     }
 
@@ -326,6 +346,9 @@ private:
     std::vector<std::int32_t> border_behind_;
     std::vector<std::int32_t> flip_stack_;  // Repair::legalize
     std::uint32_t last_ = 0;
+    std::size_t erosion_limit_ = 0;  // limit_erosion
+    std::size_t eroded_total_ = 0;
+    bool gave_up_ = false;
 };
 
 /// The vertex ids of a radial run: mesh vertex j is sorted position order[j], input index
@@ -344,7 +367,34 @@ struct RadialWorkspace {
     /// wants (at 10^6 points they are 48 MB, which would otherwise stay live through the
     /// build and raise its peak).
     bool keep_sort_memory = true;
+    /// Eroded edges per point beyond which the radial run gives up and its points are
+    /// inserted by cavities in BRIO order instead (Builder::limit_erosion,
+    /// build_by_cavities); 0: never. Only `automatic` sets it (external.hpp).
+    std::size_t erosion_limit = 0;
+    /// Whether the last build_radial gave its points to build_by_cavities.
+    bool gave_up = false;
 };
+
+/// The fallback of a radial run that gave up: the Bowyer-Watson insertion (bowyer_watson.hpp)
+/// of `points` (sorted, distinct, not all collinear) in BRIO order, written as build_radial
+/// writes its run (ids.order[j]: the position in `points` of mesh vertex j). The mesh's
+/// deleted slots (the ghosts') are in its free list; off-hull vertices have hull_next dead.
+template <PredicateKernel K, Instrumentation I, InCirclePolicy P>
+std::optional<Failure> build_by_cavities(const K& kernel, std::span<const Point2> points,
+                                         std::span<const std::uint32_t> input_of, RadialIds& ids,
+                                         Mesh& mesh, Counters& counters) {
+    ids.order = brio_order(points);
+    std::vector<Point2> local(points.size());
+    ids.input_of.resize(points.size());
+    for (std::size_t j = 0; j < points.size(); ++j) {
+        local[j] = points[ids.order[j]];
+        ids.input_of[j] = input_of[ids.order[j]];
+    }
+    CavityInserter<K, I, P> inserter(kernel, local, ids.input_of, ids.order);
+    auto failure = inserter.run(mesh);
+    counters += inserter.counters();
+    return failure;
+}
 
 /// One external incremental run in radial order over `points` (sorted, distinct, not
 /// empty): about their radial centre, exact distance order, the collinear prefix sorted
@@ -367,27 +417,38 @@ std::optional<Failure> build_radial(const K& kernel, std::span<const Point2> poi
     }
     Builder<K, I, P, RadialHullHash, R> builder(kernel, local, ids.input_of,
                                                 RadialHullHash(centre));
+    builder.limit_erosion(work.erosion_limit);
     auto failure = builder.run(mesh);
     counters += builder.counters();
-    return failure;
+    work.gave_up = builder.gave_up();
+    if (failure || !work.gave_up) return failure;
+    return build_by_cavities<K, I, P>(kernel, points, input_of, ids, mesh, counters);
 }
 
 template <PredicateKernel K, Instrumentation I, InCirclePolicy P, Repair R = Repair::erode>
 std::optional<Failure> build_radial(const K& kernel, std::span<const Point2> points,
                                     std::span<const std::uint32_t> input_of, RadialIds& ids,
-                                    Mesh& mesh, Counters& counters) {
+                                    Mesh& mesh, Counters& counters, std::size_t erosion_limit = 0) {
     RadialWorkspace work;
     work.keep_sort_memory = false;
+    work.erosion_limit = erosion_limit;
     return build_radial<K, I, P, R>(kernel, points, input_of, ids, mesh, counters, work);
 }
 
 /// One radial run over the whole sorted input, written as an algorithm's output: the mesh
 /// over radial positions, their input indices, and the id of sorted position 0.
+/// `erosion_limit`: RadialWorkspace::erosion_limit (a fallback is counted in
+/// result.cavity_pieces).
 template <PredicateKernel K, Instrumentation I, InCirclePolicy P, Repair R = Repair::erode>
-void build_radial_output(const K& kernel, const SortedInput& in, MeshOutput& out, Result& result) {
+void build_radial_output(const K& kernel, const SortedInput& in, MeshOutput& out, Result& result,
+                         std::size_t erosion_limit = 0) {
     RadialIds ids;
-    result.failure =
-        build_radial<K, I, P, R>(kernel, in.points, in.input_of, ids, out.mesh, result.counters);
+    RadialWorkspace work;
+    work.keep_sort_memory = false;
+    work.erosion_limit = erosion_limit;
+    result.failure = build_radial<K, I, P, R>(kernel, in.points, in.input_of, ids, out.mesh,
+                                              result.counters, work);
+    result.cavity_pieces = work.gave_up ? 1 : 0;
     for (std::size_t j = 0; j < ids.order.size(); ++j) {
         if (ids.order[j] == 0) out.first = static_cast<std::uint32_t>(j);
     }

@@ -13,7 +13,12 @@
 //                  points each strip cut across into tiles first (Options::strip_tiles).
 //   automatic      radial below automatic_strips_from points, strips above, except on
 //                  points along a convex curve that the radial order follows
-//                  (curve_rule.hpp), where radial stays.
+//                  (curve_rule.hpp), where radial stays. A radial run (the one, or a
+//                  strip's) that erodes more than automatic_erosion_limit edges per point
+//                  gives up, and its points are inserted by cavities in BRIO order
+//                  (build_by_cavities, builder.hpp): no longer external, but immune to
+//                  the curves that cross a sweep. Decided per piece from its points alone,
+//                  so the output still depends on neither the thread count nor timing.
 //
 // The insertion itself is builder.hpp, the merge merge.hpp.
 #pragma once
@@ -44,9 +49,13 @@ struct ExternalIncremental {
             radial_follows_curve(in.points, kernel)) {
             result.strategy = Strategy::radial;
         }
+        // Only `automatic` may hand a piece whose radial run erodes too much to cavity
+        // insertion (automatic_erosion_limit); a requested order runs as requested.
+        const std::size_t erosion_limit =
+            options.strategy == Strategy::automatic ? automatic_erosion_limit : 0;
         auto radial = [&](Strategy reported) {
             result.strategy = reported;
-            build_radial_output<K, I, P>(kernel, in, out, result);
+            build_radial_output<K, I, P>(kernel, in, out, result, erosion_limit);
         };
         if (n < 3) {
             out.mesh.collinear = true;
@@ -70,10 +79,10 @@ struct ExternalIncremental {
                 (tiles <= 1 || all_on_one_line(std::span<const Point2>(in.points), kernel))) {
                 radial(Strategy::strips);
             } else {
-                result.failure = build_strips<K, I, P>(kernel, std::span<Point2>(in.points),
-                                                       std::span<std::uint32_t>(in.input_of), cuts,
-                                                       tiles, options.threads, out.mesh, out.first,
-                                                       result.counters, result.strips);
+                result.failure = build_strips<K, I, P>(
+                    kernel, std::span<Point2>(in.points), std::span<std::uint32_t>(in.input_of),
+                    cuts, tiles, options.threads, out.mesh, out.first, result.counters,
+                    result.strips, erosion_limit, result.cavity_pieces);
             }
         }
     }

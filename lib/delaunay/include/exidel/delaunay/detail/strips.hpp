@@ -247,6 +247,7 @@ struct PieceWorkspace {
     TilingScratch tiling;
     FreshVector<Point2> strip_points;  // a strip being tiled, as it was sorted
     FreshVector<std::uint32_t> strip_ids;
+    std::size_t cavity_pieces = 0;  // pieces whose radial run gave up (build_by_cavities)
 };
 
 template <PredicateKernel K, Instrumentation I, InCirclePolicy P>
@@ -283,10 +284,19 @@ std::optional<Failure> build_piece(const K& kernel, std::span<const Point2> pts,
                        "piece [" + std::to_string(a) + ", " + std::to_string(b) +
                            ") came out collinear although a point off its line was found"};
     }
-    // Local vertex j is position a + order[j], local triangle t is slot 2a + t.
+    // Local vertex j is position a + order[j], local triangle t is slot 2a + t. Both
+    // builders use at most 2 (b - a) - 2 slots (the cavity insertion's sphere, ghosts
+    // included, has that many triangles and reuses freed slots first); more would write
+    // into the next piece's.
+    if (part.triangles.size() / 3 > 2 * std::size_t{b - a}) {
+        return Failure{FailureKind::merge_inconsistent, input_of[a], a,
+                       "piece [" + std::to_string(a) + ", " + std::to_string(b) +
+                           ") used more triangle slots than its range holds"};
+    }
     const std::size_t base = 6 * static_cast<std::size_t>(a);
     for (std::size_t e = 0; e < part.triangles.size(); ++e) {
-        mesh.triangles[base + e] = a + order[part.triangles[e]];
+        const std::uint32_t v = part.triangles[e];
+        mesh.triangles[base + e] = v == dead ? dead : a + order[v];  // dead: a free slot
         mesh.halfedges[base + e] =
             part.halfedges[e] < 0 ? -1 : part.halfedges[e] + static_cast<std::int32_t>(base);
     }
@@ -299,10 +309,14 @@ std::optional<Failure> build_piece(const K& kernel, std::span<const Point2> pts,
                 part.hull_edge[j] < 0 ? -1 : part.hull_edge[j] + static_cast<std::int32_t>(base);
         }
     }
+    // Free: the part's own deleted slots (a cavity insertion's ghosts; a radial run
+    // leaves none), then the slots it did not reach.
     piece.free.clear();
+    for (const std::uint32_t t : part.free) piece.free.push_back(2 * a + t);
     for (std::size_t t = 2 * a + part.triangles.size() / 3; t < 2 * std::size_t{b}; ++t) {
         piece.free.push_back(static_cast<std::uint32_t>(t));
     }
+    if (work.radial.gave_up) ++work.cavity_pieces;
     return std::nullopt;
 }
 
@@ -313,12 +327,16 @@ std::optional<Failure> build_piece(const K& kernel, std::span<const Point2> pts,
 /// lexicographically smallest point. `pieces_built`: the strips, or their tiles, that
 /// were triangulated and merged. Every strip must be non-collinear (strip_cuts); a single
 /// strip is only worth this with tiles (one plain strip is one radial run).
+/// `erosion_limit`: each piece's RadialWorkspace::erosion_limit; `cavity_pieces` receives
+/// the number of pieces that fell back to cavity insertion (a property of each piece's
+/// points alone, so of the input, never of `threads`).
 template <PredicateKernel K, Instrumentation I, InCirclePolicy P>
 std::optional<Failure> build_strips(const K& kernel, std::span<Point2> pts,
                                     std::span<std::uint32_t> input_of,
                                     std::span<const std::uint32_t> cuts, std::size_t tiles,
                                     unsigned threads, Mesh& mesh, std::uint32_t& first_point,
-                                    Counters& counters, std::size_t& pieces_built) {
+                                    Counters& counters, std::size_t& pieces_built,
+                                    std::size_t erosion_limit, std::size_t& cavity_pieces) {
     const std::size_t n = pts.size();
     const std::size_t strips = cuts.size() - 1;
     mesh = Mesh{};
@@ -396,9 +414,11 @@ std::optional<Failure> build_strips(const K& kernel, std::span<Point2> pts,
     const std::size_t blocks = (strips + block - 1) / block;
     std::vector<std::optional<Failure>> block_failures(blocks);
     std::vector<Counters> block_counters(blocks);
+    std::vector<std::size_t> block_cavity_pieces(blocks, 0);
     parallel_for(blocks, threads, [&](std::size_t j) {
         Counters& into = block_counters[j];
         PieceWorkspace work;  // one per block: its strips reuse the memory
+        work.radial.erosion_limit = erosion_limit;
         auto solve = [&](auto& self, std::size_t lo, std::size_t size) -> std::optional<Failure> {
             if (size == 1) return build_strip(lo, into, work);
             const std::size_t half = size / 2;
@@ -408,9 +428,12 @@ std::optional<Failure> build_strips(const K& kernel, std::span<Point2> pts,
             return merge(lo, lo + half, into);
         };
         block_failures[j] = solve(solve, j * block, block);
+        block_cavity_pieces[j] = work.cavity_pieces;
     });
+    cavity_pieces = 0;
     for (std::size_t j = 0; j < blocks; ++j) {
         counters += block_counters[j];
+        cavity_pieces += block_cavity_pieces[j];
         if (block_failures[j]) return block_failures[j];
     }
     for (std::size_t width = block; width < strips; width *= 2) {
