@@ -425,16 +425,6 @@ std::optional<Failure> build_radial(const K& kernel, std::span<const Point2> poi
     return build_by_cavities<K, I, P>(kernel, points, input_of, ids, mesh, counters);
 }
 
-template <PredicateKernel K, Instrumentation I, InCirclePolicy P, Repair R = Repair::erode>
-std::optional<Failure> build_radial(const K& kernel, std::span<const Point2> points,
-                                    std::span<const std::uint32_t> input_of, RadialIds& ids,
-                                    Mesh& mesh, Counters& counters, std::size_t erosion_limit = 0) {
-    RadialWorkspace work;
-    work.keep_sort_memory = false;
-    work.erosion_limit = erosion_limit;
-    return build_radial<K, I, P, R>(kernel, points, input_of, ids, mesh, counters, work);
-}
-
 /// One radial run over the whole sorted input, written as an algorithm's output: the mesh
 /// over radial positions, their input indices, and the id of sorted position 0.
 /// `erosion_limit`: RadialWorkspace::erosion_limit (a fallback is counted in
