@@ -5,9 +5,11 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <condition_variable>
 #include <cstring>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <ostream>
 #include <span>
 #include <string_view>
@@ -177,26 +179,72 @@ private:
 };
 
 /// Writes items 0 .. count - 1 to `out` in order, items [begin, end) formatted by
-/// format(begin, end, buffer): slices of `slice` items are formatted `threads` at a time,
-/// each into its own buffer, then written in order. The text does not depend on
-/// `threads`; memory stays bounded by threads slices.
+/// format(begin, end, buffer), in slices of `slice` items. The text does not depend on
+/// `threads`.
+///
+/// With more than one thread, formatting and writing overlap: the threads take slices in
+/// order from parallel_for's counter and format each into one of a ring of 2 x threads
+/// buffers; whichever thread finishes the lowest slice not yet written becomes the writer
+/// and writes every consecutive formatted slice, in order, while the others go on
+/// formatting (writing a large file is mostly the kernel filling page-cache pages, which
+/// formatting used to wait for). A thread about to format slice s first waits until slice
+/// s - ring is written, so memory stays bounded by the ring. No wait can last: the lowest
+/// unwritten slice was handed out before any slice that waits on it, and its own wait is
+/// on slices already written. When a format call or the stream throws, every waiting
+/// thread stops, and parallel_for rethrows the exception.
 template <class FormatRange>
 void write_slices(std::ostream& out, std::size_t count, unsigned threads, std::size_t slice,
                   FormatRange&& format) {
-    const std::size_t workers = std::max(threads, 1u);
-    std::vector<TextBuffer> buffers(std::min(workers, (count + slice - 1) / slice));
-    for (std::size_t round = 0; round < count; round += slice * workers) {
-        const std::size_t slices = std::min(workers, (count - round + slice - 1) / slice);
-        exidel::parallel_for(slices, threads, [&](std::size_t s) {
-            TextBuffer& b = buffers[s];
-            b.clear();
-            const std::size_t begin = round + s * slice;
-            format(begin, std::min(count, begin + slice), b);
-        });
+    const std::size_t slices = (count + slice - 1) / slice;
+    const std::size_t workers = std::min<std::size_t>(std::max(threads, 1u), slices);
+    const auto range = [&](std::size_t s, TextBuffer& b) {
+        b.clear();
+        format(s * slice, std::min(count, (s + 1) * slice), b);
+    };
+    if (workers <= 1) {
+        TextBuffer b;
         for (std::size_t s = 0; s < slices; ++s) {
-            out.write(buffers[s].view().data(), static_cast<std::streamsize>(buffers[s].size()));
+            range(s, b);
+            out.write(b.view().data(), static_cast<std::streamsize>(b.size()));
         }
+        return;
     }
+    const std::size_t ring = 2 * workers;
+    std::vector<TextBuffer> buffers(ring);
+    std::vector<std::uint8_t> formatted(ring, 0);  // per buffer: holds an unwritten slice
+    std::mutex m;
+    std::condition_variable slot_free;
+    std::size_t written = 0;  // slices 0 .. written - 1 are in `out`
+    bool writing = false, failed = false;
+    exidel::parallel_for(slices, static_cast<unsigned>(workers), [&](std::size_t s) {
+        try {
+            {
+                std::unique_lock lock(m);
+                slot_free.wait(lock, [&] { return failed || s < written + ring; });
+                if (failed) return;
+            }
+            range(s, buffers[s % ring]);
+            std::unique_lock lock(m);
+            formatted[s % ring] = 1;
+            if (writing) return;  // the writer sees this slice when it reaches it
+            writing = true;
+            while (!failed && written < slices && formatted[written % ring]) {
+                const TextBuffer& b = buffers[written % ring];
+                lock.unlock();
+                out.write(b.view().data(), static_cast<std::streamsize>(b.size()));
+                lock.lock();
+                formatted[written % ring] = 0;
+                ++written;
+                slot_free.notify_all();
+            }
+            writing = false;
+        } catch (...) {
+            const std::lock_guard lock(m);
+            failed = true;
+            slot_free.notify_all();
+            throw;
+        }
+    });
 }
 
 /// write_slices with item i formatted by format(i, buffer).
