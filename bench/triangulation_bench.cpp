@@ -68,11 +68,13 @@
 //   the points' own angular range and the walk goes both ways: 1.7 per point.)
 // The kernel comparison (double, exact) runs on uniform only, exact at 10^4 only.
 // --exidel_huge adds 10^7 uniform (every strategy; several GB of memory).
-// --exidel_giant adds 10^8 uniform, the default (t1, t2) and CGAL only: about 9 GB for
-// exidel, 15 GB for CGAL, 3.2 GB for the input in both forms (issue 17's scale check).
+// --exidel_giant adds 10^8 uniform and every realistic family, the default (t1, t2) and
+// CGAL only: about 9 GB for exidel, 15 GB for CGAL, 3.2 GB for the input in both forms
+// (issue 17's scale check; choose inputs with --benchmark_filter, e.g. '/100000000/').
 // Measured on the 2-core development machine under a load of 3-4 (another build
-// running): 16 minutes with --benchmark_repetitions=3, so well under 15 with the default
-// single repetition (the untimed runs and input generation are not repeated).
+// running): 16 minutes per input with --benchmark_repetitions=3, so well under 15 with
+// the default single repetition (the untimed runs and input generation are not
+// repeated); seven inputs take seven times that.
 //
 //   exidel_bench_triangulation --benchmark_filter='/100000/'         # 10^5 only
 //   exidel_bench_triangulation --benchmark_filter='uniform/1000000/(adaptive-auto|cgal)'
@@ -490,12 +492,19 @@ int main(int argc, char** argv) {
         if (huge) add_default(std::string(f.name), 10'000'000);
     }
     if (giant) {
+        // 10^8: the default (t1, t2) and CGAL only, uniform and every realistic family.
         const std::size_t n = 100'000'000;
-        const std::string prefix = "tri/uniform/" + std::to_string(n) + "/";
-        add_exidel<AdaptiveKernel>(prefix, "adaptive", "uniform", n, Strategy::automatic, 1);
-        add_exidel<AdaptiveKernel>(prefix, "adaptive", "uniform", n, Strategy::automatic, 2);
-        reg(prefix + "cgal-epick", n,
-            [=](benchmark::State& s) { cgal_bench(s, prefix + "cgal-epick", "uniform", n); });
+        std::vector<std::string> inputs{"uniform"};
+        for (const testing::RealisticInfo& f : testing::realistic_families()) {
+            inputs.emplace_back(f.name);
+        }
+        for (const std::string& in_name : inputs) {
+            const std::string prefix = "tri/" + in_name + "/" + std::to_string(n) + "/";
+            add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::automatic, 1);
+            add_exidel<AdaptiveKernel>(prefix, "adaptive", in_name, n, Strategy::automatic, 2);
+            reg(prefix + "cgal-epick", n,
+                [=](benchmark::State& s) { cgal_bench(s, prefix + "cgal-epick", in_name, n); });
+        }
     }
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();

@@ -51,7 +51,7 @@ ones, so no point location is needed. Its order of insertion (--order):
                  curve inserted towards its vertex
   radial         by exact distance from a centre (ties by x then y)
   strips         vertical strips of --strip-points points, each radial, merged by the
-                 Guibas-Stolfi zipper, on --threads threads; from 2^24 points (or
+                 Guibas-Stolfi zipper, on --threads threads; from 2^22 points (or
                  with --strip-tiles) each strip cut across into tiles first
   auto           (default) radial below 32768 points and on points along a convex
                  curve (a sampled hull test: parabolas, ellipses, not circles),

@@ -619,9 +619,11 @@ TEST(DelaunayTiles, TileStripOnRowsTinyAndHugeRanges) {
               2u);
 }
 
-// The default keeps plain strips (and their arrays) below 2^24 points, then square tiles.
+// The default keeps plain strips (and their arrays) below 2^22 points, then square tiles.
+static_assert(tiles_from == std::size_t{1} << 22);
 static_assert(default_strip_tiles(tiles_from - 1, 1 << 14) == 1);
-static_assert(default_strip_tiles(tiles_from, 1 << 14) == 32);
+static_assert(default_strip_tiles(tiles_from, 1 << 14) == 16);
+static_assert(default_strip_tiles(10'000'000, 1 << 14) == 24);
 static_assert(default_strip_tiles(100'000'000, 1 << 14) == 78);
 static_assert(default_strip_tiles(delaunay::detail::max_points, 1) == 18708);
 

@@ -9,7 +9,7 @@
 //                  flips on random input and near-linear on convex curves; still
 //                  external, no point location.
 //   strips         lexicographic strips, each triangulated in radial order, merged by the
-//                  Guibas-Stolfi zipper, on one or more threads (strips.hpp); from 2^24
+//                  Guibas-Stolfi zipper, on one or more threads (strips.hpp); from 2^22
 //                  points each strip cut across into tiles first (Options::strip_tiles).
 //   automatic      radial below automatic_strips_from points, strips above, except on
 //                  points along a convex curve that the radial order follows

@@ -8,7 +8,7 @@
 // independent and run on `threads` threads; which thread does which job never changes
 // the result, so the output is the same for every thread count.
 //
-// Tiles (Options::strip_tiles > 1; the default from 2^24 points, external.hpp): each strip
+// Tiles (Options::strip_tiles > 1; the default from 2^22 points, external.hpp): each strip
 // is cut across by horizontal lines into tiles (tile_strip), whose points it permutes in
 // place so that each tile is a run of positions; a strip's tiles are triangulated and
 // merged bottom up first (the zipper in the plane turned by 90 degrees, merge.hpp), then
