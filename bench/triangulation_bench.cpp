@@ -72,9 +72,9 @@
 // CGAL only: about 9 GB for exidel, 15 GB for CGAL, 3.2 GB for the input in both forms
 // (issue 17's scale check; choose inputs with --benchmark_filter, e.g. '/100000000/').
 // Measured on the 2-core development machine under a load of 3-4 (another build
-// running): 16 minutes per input with --benchmark_repetitions=3, so well under 15 with
-// the default single repetition (the untimed runs and input generation are not
-// repeated); seven inputs take seven times that.
+// running): 16 minutes for uniform with --benchmark_repetitions=3; lonlat with the
+// default single repetition took 13 minutes on 2026-12-06 (CGAL alone 2 minutes per run).
+// Every input in one process takes well over an hour: choose inputs with the filter.
 //
 //   exidel_bench_triangulation --benchmark_filter='/100000/'         # 10^5 only
 //   exidel_bench_triangulation --benchmark_filter='uniform/1000000/(adaptive-auto|cgal)'

@@ -32,11 +32,9 @@ void format_items(std::size_t begin, std::size_t end, TextBuffer& b) {
 }
 
 std::string expected_text(std::size_t count) {
-    std::ostringstream s;
     TextBuffer b;
     format_items(0, count, b);
-    s << b.view();
-    return s.str();
+    return std::string(b.view());
 }
 
 TEST(WriteSlices, SameBytesForEveryThreadCountAndSliceSize) {

@@ -35,8 +35,8 @@ constexpr std::size_t default_strip_points(std::size_t /*n*/) noexcept {
 /// strips at 4 x 10^6: uniform 0.79x, poisson-disc 0.75x, tracks 0.91x, borders 0.92x,
 /// lonlat 0.98x, coastline 1.13x; at 10^7 every family 0.75x to 0.97x; at 2 x 10^6 mixed,
 /// 0.90x to 1.10x). Measured on 2026-12-06 with a scratch program setting strip_points
-/// and strip_tiles, medians of 3 to 5 interleaved runs; docs/benchmarks.md, "Realistic
-/// families". It was 2^24, where plain strips had been measured on uniform points only.
+/// and strip_tiles, medians of 3 to 5 interleaved runs; docs/measurements.md, "Tiles".
+/// It was 2^24, where plain strips had been measured on uniform points only.
 inline constexpr std::size_t tiles_from = std::size_t{1} << 22;
 
 /// Tiles per strip when Options::strip_tiles is 0. Below tiles_from, 1: plain strips, the
