@@ -349,6 +349,62 @@ Circumcenter circumcenter_exact(Point2 a, Point2 b, Point2 c) noexcept {
     return classify({x, y});
 }
 
+std::string_view to_string(IntersectionStatus status) noexcept {
+    switch (status) {
+        case IntersectionStatus::ok: return "ok";
+        case IntersectionStatus::parallel: return "parallel";
+        case IntersectionStatus::overflow: return "overflow";
+        case IntersectionStatus::non_finite_input: return "non_finite_input";
+    }
+    return "unknown";
+}
+
+Intersection intersection(Point2 a, Point2 b, Point2 c, Point2 d) noexcept {
+    if (!finite(a) || !finite(b) || !finite(c) || !finite(d))
+        return {{nan, nan}, IntersectionStatus::non_finite_input};
+    // Every coordinate is an integer multiple of 2^grid, the smallest exponent among them.
+    int grid = 1 << 20;
+    for (double v : {a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y}) {
+        const detail::Binary64 e = detail::decode(v);
+        if (e.significand != 0) grid = std::min(grid, e.exponent);
+    }
+    if (grid == (1 << 20)) grid = 0;  // every coordinate is zero
+    Int ax, ay, ux, uy, vx, vy, wx, wy;
+    lift(ax.get(), a.x, grid);
+    lift(ay.get(), a.y, grid);
+    lift(ux.get(), b.x, grid);
+    lift(uy.get(), b.y, grid);
+    lift(vx.get(), d.x, grid);
+    lift(vy.get(), d.y, grid);
+    lift(wx.get(), c.x, grid);
+    lift(wy.get(), c.y, grid);
+    // u = b - a, v = d - c, w = c - a.
+    mpz_sub(ux.get(), ux.get(), ax.get());
+    mpz_sub(uy.get(), uy.get(), ay.get());
+    mpz_sub(vx.get(), vx.get(), wx.get());
+    mpz_sub(vy.get(), vy.get(), wy.get());
+    mpz_sub(wx.get(), wx.get(), ax.get());
+    mpz_sub(wy.get(), wy.get(), ay.get());
+    // D = u x v, N = w x v; the point is a + (N / D) u = (D a + N u) / D.
+    Int den, num, t, n;
+    mpz_mul(den.get(), ux.get(), vy.get());
+    mpz_submul(den.get(), uy.get(), vx.get());
+    if (mpz_sgn(den.get()) == 0) return {{nan, nan}, IntersectionStatus::parallel};
+    mpz_mul(num.get(), wx.get(), vy.get());
+    mpz_submul(num.get(), wy.get(), vx.get());
+    const bool flip = mpz_sgn(den.get()) < 0;
+    const auto coordinate = [&](mpz_srcptr base, mpz_srcptr direction) {
+        mpz_mul(n.get(), den.get(), base);
+        mpz_addmul(n.get(), num.get(), direction);
+        if (flip) mpz_neg(n.get(), n.get());
+        mpz_abs(t.get(), den.get());
+        return round_quotient(n.get(), t.get(), grid);
+    };
+    const Point2 p{coordinate(ax.get(), ux.get()), coordinate(ay.get(), uy.get())};
+    const bool overflow = std::isinf(p.x) || std::isinf(p.y);
+    return {p, overflow ? IntersectionStatus::overflow : IntersectionStatus::ok};
+}
+
 namespace {
 inline Circumcenter decide(Point2 a, Point2 b, Point2 c) noexcept {
     if (!finite(a) || !finite(b) || !finite(c))

@@ -5,13 +5,16 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 
 #include "circumcenter_oracle.hpp"
 #include "double_word.hpp"
+#include "exidel/predicates/adaptive.hpp"
 #include "exidel/predicates/construct.hpp"
 #include "exidel/testing/all.hpp"
 
@@ -199,6 +202,88 @@ TEST(Circumcenter, CocircularTrianglesShareTheirCentreBitForBit) {
     }
     EXPECT_EQ(first.point.x, 1024.0);
     EXPECT_EQ(first.point.y, -7.0);
+}
+
+// ---- intersection ----------------------------------------------------------------------------
+
+/// CGAL's exact crossing of lines ab and cd over Gmpq, rounded by MPFR; nullopt when the
+/// lines are parallel (or a point pair coincides).
+std::optional<Point2> oracle_intersection(Point2 a, Point2 b, Point2 c, Point2 d) {
+    using Q = CGAL::Gmpq;
+    const auto lift = [](Point2 p) { return std::pair<Q, Q>{Q(p.x), Q(p.y)}; };
+    const auto [ax, ay] = lift(a);
+    const auto [bx, by] = lift(b);
+    const auto [cx, cy] = lift(c);
+    const auto [dx, dy] = lift(d);
+    // Written independently of construct.cpp: Cramer's rule on a + s (b - a) = c + t (d - c).
+    const Q m11 = bx - ax, m12 = cx - dx, m21 = by - ay, m22 = cy - dy;
+    const Q det = m11 * m22 - m12 * m21;
+    if (det == 0) return std::nullopt;
+    const Q s = ((cx - ax) * m22 - m12 * (cy - ay)) / det;
+    return Point2{round_to_double(ax + s * m11), round_to_double(ay + s * m21)};
+}
+
+void check_intersection(Point2 a, Point2 b, Point2 c, Point2 d) {
+    const Intersection got = intersection(a, b, c, d);
+    const std::optional<Point2> want = oracle_intersection(a, b, c, d);
+    if (!want) {
+        RC_ASSERT(got.status == IntersectionStatus::parallel);
+        return;
+    }
+    const bool overflow = std::isinf(want->x) || std::isinf(want->y);
+    RC_ASSERT(got.status == (overflow ? IntersectionStatus::overflow : IntersectionStatus::ok));
+    RC_ASSERT(same_bits(got.point.x, want->x));
+    RC_ASSERT(same_bits(got.point.y, want->y));
+}
+
+TEST(Intersection, IsCorrectlyRoundedOnEveryFamilyAndScale) {
+    for (const testing::FamilyInfo& f : testing::all_families()) {
+        const bool ok = rc::check("intersection, " + std::string(f.name), [&] {
+            const auto [a, b, c, d] = *testing::gen_query4(f.family);
+            const int k = *rc::gen::inRange(-1100, 1001);
+            const double shift = *rc::gen::element(0.0, 1.0, -3.0e5, 0x1p-1060);
+            const bool scaled = *rc::gen::arbitrary<bool>();
+            const auto move = [&](Point2 p) {
+                return scaled ? Point2{std::ldexp(p.x, k) + shift, std::ldexp(p.y, k) - shift} : p;
+            };
+            const Point2 sa = move(a), sb = move(b), sc = move(c), sd = move(d);
+            for (const Point2 p : {sa, sb, sc, sd})
+                RC_PRE(std::isfinite(p.x) && std::isfinite(p.y));
+            check_intersection(sa, sb, sc, sd);
+        });
+        EXPECT_TRUE(ok) << f.name;
+    }
+}
+
+TEST(Intersection, CrossingSegmentsGiveAPointInBothBoxes) {
+    const bool ok = rc::check("intersection of crossing segments", [] {
+        const auto [a, b, c, d] = *testing::gen_query4(testing::Family::uniform);
+        const Intersection x = intersection(a, b, c, d);
+        RC_PRE(x.ok());
+        const AdaptiveKernel k;
+        RC_PRE(to_int(k.orient2d(a, b, c)) * to_int(k.orient2d(a, b, d)) < 0 &&
+               to_int(k.orient2d(c, d, a)) * to_int(k.orient2d(c, d, b)) < 0);
+        for (const auto& [p, q] : {std::pair{a, b}, std::pair{c, d}}) {
+            RC_ASSERT(std::min(p.x, q.x) <= x.point.x && x.point.x <= std::max(p.x, q.x));
+            RC_ASSERT(std::min(p.y, q.y) <= x.point.y && x.point.y <= std::max(p.y, q.y));
+        }
+    });
+    EXPECT_TRUE(ok);
+}
+
+TEST(Intersection, ParallelAndNonFiniteInputAreReported) {
+    EXPECT_EQ(intersection({0, 0}, {1, 1}, {0, 1}, {1, 2}).status, IntersectionStatus::parallel);
+    EXPECT_EQ(intersection({0, 0}, {0, 0}, {0, 1}, {1, 2}).status, IntersectionStatus::parallel);
+    EXPECT_EQ(intersection({0, 0}, {1, 1}, {0, 1}, {std::nan(""), 2}).status,
+              IntersectionStatus::non_finite_input);
+    // Nearly parallel lines far apart: the crossing is beyond the largest double.
+    const Intersection far = intersection({0, 0}, {1, 0}, {0, 1}, {0x1p1000, 1 - 0x1p-52});
+    EXPECT_EQ(far.status, IntersectionStatus::overflow);
+    EXPECT_TRUE(std::isinf(far.point.x));
+    // An exact tie between two doubles goes to the even one: (1 + 2^-53, 0) is halfway.
+    const Intersection tie = intersection({1, -1}, {1 + 0x1p-52, 1}, {0, 0}, {4, 0});
+    EXPECT_TRUE(tie.ok());
+    EXPECT_EQ(tie.point.x, 1.0);
 }
 
 }  // namespace

@@ -15,7 +15,7 @@
 namespace exidel::test {
 
 /// q rounded to nearest (ties to even) as IEEE binary64 does it, overflow to infinity.
-inline double round_to_double(const CGAL::Gmpq& q) {
+inline double round_to_double(mpq_srcptr q) {
     const mpfr_exp_t old_min = mpfr_get_emin(), old_max = mpfr_get_emax();
     // binary64: values in [2^(emin-1), 2^emax) in MPFR's convention (significand in
     // [1/2, 1)), subnormals down to 2^-1074.
@@ -23,7 +23,7 @@ inline double round_to_double(const CGAL::Gmpq& q) {
     mpfr_set_emax(1024);
     mpfr_t x;
     mpfr_init2(x, 53);
-    int inexact = mpfr_set_q(x, q.mpq(), MPFR_RNDN);
+    int inexact = mpfr_set_q(x, q, MPFR_RNDN);
     inexact = mpfr_subnormalize(x, inexact, MPFR_RNDN);
     const double d = mpfr_get_d(x, MPFR_RNDN);
     mpfr_clear(x);
@@ -31,6 +31,8 @@ inline double round_to_double(const CGAL::Gmpq& q) {
     mpfr_set_emax(old_max);
     return d;
 }
+
+inline double round_to_double(const CGAL::Gmpq& q) { return round_to_double(q.mpq()); }
 
 /// The exact circumcentre of abc as rationals; nullopt when a, b, c are collinear.
 inline std::optional<std::pair<CGAL::Gmpq, CGAL::Gmpq>> exact_circumcenter(Point2 a, Point2 b,

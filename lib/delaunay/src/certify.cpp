@@ -2,11 +2,13 @@
 #include "exidel/delaunay/certify.hpp"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cstdint>
 #include <numeric>
 #include <string>
 
+#include "certify_mesh.hpp"
 #include "exidel/predicates/adaptive.hpp"
 
 namespace exidel::delaunay {
@@ -28,6 +30,11 @@ std::string_view to_string(FindingKind kind) noexcept {
         case FindingKind::wrong_triangle_count: return "wrong_triangle_count";
         case FindingKind::not_delaunay: return "not_delaunay";
         case FindingKind::collinear_mismatch: return "collinear_mismatch";
+        case FindingKind::input_mismatch: return "input_mismatch";
+        case FindingKind::added_point_wrong: return "added_point_wrong";
+        case FindingKind::chain_broken: return "chain_broken";
+        case FindingKind::chain_off_segment: return "chain_off_segment";
+        case FindingKind::constraints_mismatch: return "constraints_mismatch";
         case FindingKind::non_finite_input: return "non_finite_input";
     }
     return "unknown";
@@ -60,8 +67,9 @@ bool finite(double v) {
 
 class Certifier {
 public:
-    Certifier(std::span<const Point2> points, const Triangulation& tri, std::size_t max_findings)
-        : pts_(points), tri_(tri), max_findings_(max_findings) {}
+    Certifier(std::span<const Point2> points, const Triangulation& tri, std::size_t max_findings,
+              std::span<const std::array<std::uint32_t, 2>> exempt = {})
+        : pts_(points), tri_(tri), max_findings_(max_findings), exempt_(exempt) {}
 
     Certificate run() {
         for (std::size_t i = 0; i < pts_.size(); ++i) {
@@ -83,6 +91,9 @@ public:
         }
         return std::move(cert_);
     }
+
+    /// After run(): the first occurrence of every point (empty if a point is not finite).
+    std::vector<std::uint32_t> take_first() { return std::move(first_); }
 
 private:
     // The points a finding names, of any integer types.
@@ -427,6 +438,7 @@ private:
         const auto& H = tri_.halfedges;
         for (std::size_t e = 0; e < H.size(); ++e) {
             if (H[e] < 0 || static_cast<std::size_t>(H[e]) < e) continue;
+            if (exempt(T[e], T[next_halfedge(e)])) continue;
             const auto t = static_cast<std::size_t>(H[e]);
             const std::uint32_t d = T[prev_halfedge(t)];
             if (K::incircle(pts_[T[e]], pts_[T[next_halfedge(e)]], pts_[T[prev_halfedge(e)]],
@@ -439,6 +451,13 @@ private:
         }
     }
 
+    // Whether the edge (u, v) is exempt from the Delaunay check (a constraint).
+    bool exempt(std::uint32_t u, std::uint32_t v) const {
+        if (exempt_.empty()) return false;
+        const std::array<std::uint32_t, 2> key{std::min(u, v), std::max(u, v)};
+        return std::binary_search(exempt_.begin(), exempt_.end(), key);
+    }
+
     static std::size_t first_difference(const std::vector<std::uint32_t>& a,
                                         const std::vector<std::uint32_t>& b) {
         const auto [i, j] = std::mismatch(a.begin(), a.end(), b.begin(), b.end());
@@ -448,6 +467,7 @@ private:
     std::span<const Point2> pts_;
     const Triangulation& tri_;
     std::size_t max_findings_;
+    std::span<const std::array<std::uint32_t, 2>> exempt_;
     Certificate cert_;
     std::vector<std::uint32_t> first_;
     std::vector<std::uint32_t> order_;
@@ -461,5 +481,19 @@ Certificate certify(std::span<const Point2> points, const Triangulation& tri,
                     const CertifyOptions& options) {
     return Certifier(points, tri, options.max_findings).run();
 }
+
+namespace detail {
+
+MeshCertificate certify_mesh(std::span<const Point2> points, const Triangulation& tri,
+                             std::span<const std::array<std::uint32_t, 2>> exempt,
+                             std::size_t max_findings) {
+    Certifier certifier(points, tri, max_findings, exempt);
+    MeshCertificate out;
+    out.certificate = certifier.run();
+    out.first = certifier.take_first();
+    return out;
+}
+
+}  // namespace detail
 
 }  // namespace exidel::delaunay

@@ -32,6 +32,9 @@ std::string_view to_string(FailureKind kind) noexcept {
         case FailureKind::flips_exceeded: return "flips_exceeded";
         case FailureKind::location_inconsistent: return "location_inconsistent";
         case FailureKind::update_inconsistent: return "update_inconsistent";
+        case FailureKind::invalid_segment: return "invalid_segment";
+        case FailureKind::too_many_crossings: return "too_many_crossings";
+        case FailureKind::constraint_inconsistent: return "constraint_inconsistent";
     }
     return "unknown";
 }

@@ -72,6 +72,31 @@ void circumcenters(std::span<const Point2> points, std::span<const std::uint32_t
 double round_quotient(std::span<const std::uint64_t> num, std::span<const std::uint64_t> den,
                       bool negative, long exp2 = 0) noexcept;
 
+/// What intersection() found.
+enum class IntersectionStatus : std::uint8_t {
+    ok,                ///< both coordinates are the nearest doubles to the exact intersection
+    parallel,          ///< the lines are parallel or the same, or a point pair coincides: NaN
+    overflow,          ///< a coordinate rounds beyond the largest double (+-infinity there)
+    non_finite_input,  ///< a NaN or infinite coordinate; point is NaN, NaN
+};
+
+std::string_view to_string(IntersectionStatus status) noexcept;
+
+struct Intersection {
+    Point2 point;  ///< each coordinate rounded to nearest, ties to even, gradual underflow
+    IntersectionStatus status;
+    bool ok() const noexcept { return status == IntersectionStatus::ok; }
+};
+
+/// The intersection of line ab with line cd, each coordinate the double nearest to the
+/// exact value: the coordinates are lifted to integers on their common binary grid, the
+/// point a + t (b - a) with t = ((c - a) x (d - c)) / ((b - a) x (d - c)) is formed as one
+/// exact quotient per coordinate, and that quotient is rounded once by round_quotient()
+/// (proofs/bounds.md#intersection). When the segments ab and cd cross, the exact point
+/// lies in the bounding box of each, whose corners are doubles, so the rounded point does
+/// too. Always exact integers (GMP): constrained triangulations call it once per crossing.
+Intersection intersection(Point2 a, Point2 b, Point2 c, Point2 d) noexcept;
+
 /// Stage 3 alone: the exact rational circumcentre rounded once (the reference the fast
 /// path is tested against; always correct, much slower).
 Circumcenter circumcenter_exact(Point2 a, Point2 b, Point2 c) noexcept;

@@ -48,6 +48,12 @@ enum class FindingKind {
     not_delaunay,          ///< an interior edge is not locally Delaunay
     collinear_mismatch,    ///< the collinear flag disagrees with the points or arrays
     non_finite_input,      ///< the point set itself is not valid input
+    // Constrained triangulations (certify_constrained):
+    input_mismatch,        ///< the points do not start with the input, or a segment is invalid
+    added_point_wrong,     ///< an added point is not the rounded crossing of its two segments
+    chain_broken,          ///< a chain does not run end to end, or a piece is not an edge
+    chain_off_segment,     ///< a chain vertex neither on its segment nor a crossing of it
+    constraints_mismatch,  ///< `constraints` is not the set of the chains' pieces
 };
 
 std::string_view to_string(FindingKind kind) noexcept;

@@ -149,26 +149,30 @@ struct Counters {
     Counters& operator+=(const Counters& o) noexcept;
 };
 
-/// Why a run stopped. Everything but non_finite_input, too_many_points and
-/// unknown_algorithm means the
+/// Why a run stopped. Everything but non_finite_input, too_many_points, unknown_algorithm,
+/// invalid_segment and too_many_crossings means the
 /// kernel's answers were geometrically inconsistent (only possible with an inexact
 /// kernel); the structure is then abandoned instead of being walked further.
 enum class FailureKind {
-    non_finite_input,       ///< a NaN or infinite coordinate
-    too_many_points,        ///< more points than 32-bit half-edge indices can address
-    no_visible_edge,        ///< the new point saw no hull edge from the last point
-    hull_walk_exceeded,     ///< a tangent walk went all the way round the hull
-    erosion_inconsistent,   ///< the erosion reached an edge that is not on the border
-    erosion_exceeded,       ///< the erosion destroyed more triangles than exist
-    point_inside_hull,      ///< radial order: the new point saw no edge of the current hull
-    merge_inconsistent,     ///< strips: the zipper's answers do not describe a merge
-    result_inconsistent,    ///< the finished structure does not close (hull or neighbours)
-    unknown_algorithm,      ///< Options::algorithm holds no Algorithm enumerator
-    location_exceeded,      ///< a point-location walk or DAG descent did not end where it must
-    cavity_inconsistent,    ///< bowyer-watson: the conflict triangles do not form a disc
-    flips_exceeded,         ///< randomized: more flips than the new point can have neighbours
-    location_inconsistent,  ///< a located point is on all three edge lines of a triangle
-    update_inconsistent,    ///< an insertion or removal met a mesh no consistent kernel leaves
+    non_finite_input,         ///< a NaN or infinite coordinate
+    too_many_points,          ///< more points than 32-bit half-edge indices can address
+    no_visible_edge,          ///< the new point saw no hull edge from the last point
+    hull_walk_exceeded,       ///< a tangent walk went all the way round the hull
+    erosion_inconsistent,     ///< the erosion reached an edge that is not on the border
+    erosion_exceeded,         ///< the erosion destroyed more triangles than exist
+    point_inside_hull,        ///< radial order: the new point saw no edge of the current hull
+    merge_inconsistent,       ///< strips: the zipper's answers do not describe a merge
+    result_inconsistent,      ///< the finished structure does not close (hull or neighbours)
+    unknown_algorithm,        ///< Options::algorithm holds no Algorithm enumerator
+    location_exceeded,        ///< a point-location walk or DAG descent did not end where it must
+    cavity_inconsistent,      ///< bowyer-watson: the conflict triangles do not form a disc
+    flips_exceeded,           ///< randomized: more flips than the new point can have neighbours
+    location_inconsistent,    ///< a located point is on all three edge lines of a triangle
+    update_inconsistent,      ///< an insertion or removal met a mesh no consistent kernel leaves
+    invalid_segment,          ///< a constraint names a point index past the input
+    too_many_crossings,       ///< constraints: more crossing points than allowed
+    constraint_inconsistent,  ///< constraints: a segment's insertion met what no consistent kernel
+                              ///< leaves
 };
 
 std::string_view to_string(FailureKind kind) noexcept;

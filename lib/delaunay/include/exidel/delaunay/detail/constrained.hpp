@@ -1,0 +1,872 @@
+// exidel: the constrained triangulation's machinery (constrained.hpp says what it builds).
+//
+// The mesh is Triangulation's arrays (triangles, twins) grown in place, plus per half-edge
+// the pieces it carries (seg_: -1 for none, else the head of a list in carry_ of (segment,
+// chain node) pairs: several segments when they overlap) and per vertex one half-edge out
+// of it (out_). Each segment's chain is a linked list of nodes (nodes_, from head_[s]);
+// a piece is a node and its successor, and splitting a piece at a vertex inserts a node.
+// The chain is therefore kept in the order the pieces were made, never rebuilt from the
+// edges: where rounding makes a chain pass a vertex twice, it is still one walk. Every operation
+// rewrites whole triangles and gives each vertex of a rewritten triangle a half-edge of it, so out_
+// never names a slot that changed hands.
+//
+// Rotation around a vertex x: for a half-edge h out of x, twin(prev(h)) is the next
+// half-edge out of x counter-clockwise, next(twin(h)) the next clockwise; -1 ends the fan at
+// the boundary.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <set>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "exidel/delaunay/result.hpp"
+#include "exidel/delaunay/triangulate.hpp"
+#include "exidel/predicates/construct.hpp"
+#include "exidel/predicates/kernel.hpp"
+
+namespace exidel::delaunay {
+
+struct Segment;
+struct ConstrainedOptions;
+struct ConstrainedResult;
+
+namespace detail {
+
+/// Thrown inside the builder and turned into ConstrainedResult::failure at its edge.
+struct ConstrainedStop {
+    Failure failure;
+};
+
+template <PredicateKernel K>
+class ConstrainedBuilder {
+public:
+    static constexpr std::int32_t none = -1;
+
+    ConstrainedBuilder(const K& kernel, std::vector<Point2> points, Triangulation tri,
+                       std::size_t max_added)
+        : k_(kernel),
+          pts_(std::move(points)),
+          tri_(std::move(tri.triangles)),
+          twin_(std::move(tri.halfedges)),
+          vertex_of_(std::move(tri.vertex_of_input)),
+          duplicates_(std::move(tri.duplicates)),
+          input_count_(pts_.size()),
+          max_added_(max_added) {
+        seg_.assign(tri_.size(), none);
+        out_.assign(pts_.size(), none);
+        for (std::size_t e = 0; e < tri_.size(); ++e) out_[tri_[e]] = static_cast<std::int32_t>(e);
+    }
+
+    std::size_t added() const noexcept { return pts_.size() - input_count_; }
+
+    // ---- the mesh ------------------------------------------------------------------------
+
+    static std::int32_t nxt(std::int32_t e) noexcept { return e % 3 == 2 ? e - 2 : e + 1; }
+    static std::int32_t prv(std::int32_t e) noexcept { return e % 3 == 0 ? e + 2 : e - 1; }
+    std::uint32_t from(std::int32_t e) const noexcept { return tri_[static_cast<std::size_t>(e)]; }
+    std::uint32_t to(std::int32_t e) const noexcept { return from(nxt(e)); }
+    std::int32_t twin(std::int32_t e) const noexcept { return twin_[static_cast<std::size_t>(e)]; }
+    std::int32_t seg(std::int32_t e) const noexcept { return seg_[static_cast<std::size_t>(e)]; }
+    const Point2& pt(std::uint32_t v) const noexcept { return pts_[v]; }
+    Sign orient(std::uint32_t a, std::uint32_t b, std::uint32_t c) const {
+        return k_.orient2d(pts_[a], pts_[b], pts_[c]);
+    }
+
+    [[noreturn]] void stop(FailureKind kind, std::size_t index, std::string message) const {
+        throw ConstrainedStop{Failure{kind, index, no_index, std::move(message)}};
+    }
+
+    /// Makes half-edges e and f twins (either may be -1: a boundary side).
+    void link(std::int32_t e, std::int32_t f) noexcept {
+        if (e >= 0) twin_[static_cast<std::size_t>(e)] = f;
+        if (f >= 0) twin_[static_cast<std::size_t>(f)] = e;
+    }
+    /// Writes triangle slot t as (a, b, c), its half-edges' segments (sab: a -> b, ...) and
+    /// twins (oab: the twin of a -> b, ...), and gives a, b, c a half-edge each.
+    void write(std::int32_t t, std::array<std::uint32_t, 3> v, std::array<std::int32_t, 3> s,
+               std::array<std::int32_t, 3> o) noexcept {
+        for (int i = 0; i < 3; ++i) {
+            const std::int32_t e = 3 * t + i;
+            tri_[static_cast<std::size_t>(e)] = v[static_cast<std::size_t>(i)];
+            seg_[static_cast<std::size_t>(e)] = s[static_cast<std::size_t>(i)];
+            link(e, o[static_cast<std::size_t>(i)]);
+            out_[v[static_cast<std::size_t>(i)]] = e;
+        }
+    }
+    std::int32_t new_triangle() {
+        if (tri_.size() + 3 > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+            stop(FailureKind::too_many_points, pts_.size(),
+                 "too many triangles for 32-bit indices");
+        tri_.resize(tri_.size() + 3, 0);
+        twin_.resize(twin_.size() + 3, none);
+        seg_.resize(seg_.size() + 3, none);
+        return static_cast<std::int32_t>(tri_.size() / 3 - 1);
+    }
+
+    /// Flips the edge of half-edge e (both sides must exist and e must not be a segment):
+    /// triangles (a, b, c) and (b, a, d) become (c, a, d) and (d, b, c), in the same slots.
+    /// Returns the new half-edges a -> d and d -> b (the sides opposite c).
+    std::pair<std::int32_t, std::int32_t> flip(std::int32_t e) noexcept {
+        const std::int32_t f = twin(e);
+        const std::int32_t e1 = nxt(e), e2 = prv(e), f1 = nxt(f), f2 = prv(f);
+        const std::uint32_t a = from(e), b = to(e), c = from(e2), d = from(f2);
+        const std::int32_t obc = twin(e1), oca = twin(e2), oad = twin(f1), odb = twin(f2);
+        const std::int32_t sbc = seg(e1), sca = seg(e2), sad = seg(f1), sdb = seg(f2);
+        const std::int32_t t1 = e / 3, t2 = f / 3;
+        write(t1, {c, a, d}, {sca, sad, none}, {oca, oad, 3 * t2 + 2});
+        write(t2, {d, b, c}, {sdb, sbc, none}, {odb, obc, 3 * t1 + 2});
+        return {3 * t1 + 1, 3 * t2};
+    }
+
+    /// Splits triangle t = (a, b, c) at new vertex x: (a, b, x), (b, c, x), (c, a, x).
+    /// Returns the three half-edges opposite x.
+    std::array<std::int32_t, 3> split_triangle(std::int32_t t, std::uint32_t x) {
+        const std::int32_t e0 = 3 * t, e1 = e0 + 1, e2 = e0 + 2;
+        const std::uint32_t a = from(e0), b = from(e1), c = from(e2);
+        const std::int32_t oab = twin(e0), obc = twin(e1), oca = twin(e2);
+        const std::int32_t sab = seg(e0), sbc = seg(e1), sca = seg(e2);
+        const std::int32_t t1 = new_triangle(), t2 = new_triangle();
+        write(t, {a, b, x}, {sab, none, none}, {oab, 3 * t1 + 2, 3 * t2 + 1});
+        write(t1, {b, c, x}, {sbc, none, none}, {obc, 3 * t2 + 2, 3 * t + 1});
+        write(t2, {c, a, x}, {sca, none, none}, {oca, 3 * t + 2, 3 * t1 + 1});
+        return {3 * t, 3 * t1, 3 * t2};
+    }
+
+    /// Splits the edge of half-edge e = a -> b at new vertex x lying on it: triangle
+    /// (a, b, c) becomes (a, x, c) and (x, b, c), its twin (b, a, d), when there is one,
+    /// (b, x, d) and (x, a, d). Both halves keep the edge's segments. Returns the
+    /// half-edges opposite x (two or four; -1 for the missing ones).
+    std::array<std::int32_t, 4> split_edge(std::int32_t e, std::uint32_t x) {
+        const std::int32_t f = twin(e);
+        const std::int32_t s = seg(e);
+        const std::int32_t e1 = nxt(e), e2 = prv(e);
+        const std::uint32_t a = from(e), b = to(e), c = from(e2);
+        const std::int32_t obc = twin(e1), oca = twin(e2), sbc = seg(e1), sca = seg(e2);
+        const std::int32_t t = e / 3, n1 = new_triangle();
+        if (f < 0) {
+            write(t, {a, x, c}, {s, none, sca}, {none, 3 * n1 + 2, oca});
+            write(n1, {x, b, c}, {s, sbc, none}, {none, obc, 3 * t + 1});
+            return {3 * t + 2, 3 * n1 + 1, -1, -1};
+        }
+        const std::int32_t f1 = nxt(f), f2 = prv(f);
+        const std::uint32_t d = from(f2);
+        const std::int32_t oad = twin(f1), odb = twin(f2), sad = seg(f1), sdb = seg(f2);
+        const std::int32_t u = f / 3, n2 = new_triangle();
+        // (a, x, c) | (x, b, c) | (b, x, d) | (x, a, d); a -> x pairs with x -> a, x -> b
+        // with b -> x.
+        write(t, {a, x, c}, {s, none, sca}, {3 * n2, 3 * n1 + 2, oca});
+        write(n1, {x, b, c}, {s, sbc, none}, {3 * u, obc, 3 * t + 1});
+        write(u, {b, x, d}, {s, none, sdb}, {3 * n1, 3 * n2 + 2, odb});
+        write(n2, {x, a, d}, {s, sad, none}, {3 * t, oad, 3 * u + 1});
+        return {3 * t + 2, 3 * n1 + 1, 3 * u + 2, 3 * n2 + 1};
+    }
+
+    /// Lawson's flips from new vertex x: `stack` holds the half-edges opposite x; an edge
+    /// that is not a segment is flipped when the vertex across it lies strictly inside
+    /// the circle of x's triangle. Bounded by `budget` flips.
+    void legalize(std::vector<std::int32_t>& stack, std::uint32_t x) {
+        std::size_t budget = 8 * tri_.size() / 3 + 64;
+        while (!stack.empty()) {
+            const std::int32_t e = stack.back();
+            stack.pop_back();
+            if (e < 0 || seg(e) != none) continue;
+            const std::int32_t f = twin(e);
+            if (f < 0) continue;
+            const std::uint32_t a = from(e), b = to(e), c = from(prv(e)), d = from(prv(f));
+            if (c != x) continue;  // the slot was rewritten by an earlier flip
+            if (k_.incircle(pts_[a], pts_[b], pts_[c], pts_[d]) != Sign::positive) continue;
+            // A strictly convex quadrilateral is needed; an exact kernel guarantees it.
+            if (orient(c, d, b) != Sign::positive || orient(c, d, a) != Sign::negative)
+                stop(FailureKind::flips_exceeded, x, "a flip's quadrilateral is not convex");
+            if (budget-- == 0) stop(FailureKind::flips_exceeded, x, "too many flips");
+            const auto [p, q] = flip(e);
+            stack.push_back(p);
+            stack.push_back(q);
+        }
+    }
+
+    /// Lawson's flip algorithm over every edge: an edge that is not a piece is flipped
+    /// while the vertex across it lies strictly inside the circle of its triangle, and the
+    /// four sides of the flipped quadrilateral are tested again. From any triangulation
+    /// whose pieces are edges it ends at the constrained Delaunay triangulation (every flip
+    /// lowers the triangulation lifted to the paraboloid; Lawson 1977, Chew 1989). It
+    /// runs once at the end when crossings freed edges that were pieces: such an edge was
+    /// not held to the Delaunay test while it was one, and the insertions since need not
+    /// reach it.
+    void flip_everything() {
+        std::vector<std::int32_t> queue;
+        for (std::size_t e = 0; e < twin_.size(); ++e) {
+            const auto h = static_cast<std::int32_t>(e);
+            if (twin(h) > h && seg(h) == none) queue.push_back(h);
+        }
+        flip_queue(queue);
+    }
+    /// Lawson's flips from the edges of `queue` (half-edges), spreading to the sides of
+    /// every flipped quadrilateral.
+    void flip_queue(std::vector<std::int32_t>& queue) {
+        std::size_t budget = 64 * (tri_.size() / 3) + 1024;
+        while (!queue.empty()) {
+            const std::int32_t e = queue.back();
+            queue.pop_back();
+            const std::int32_t f = twin(e);
+            if (f < 0 || seg(e) != none) continue;
+            const std::uint32_t a = from(e), b = to(e), c = from(prv(e)), d = from(prv(f));
+            if (k_.incircle(pts_[a], pts_[b], pts_[c], pts_[d]) != Sign::positive) continue;
+            if (orient(c, d, b) != Sign::positive || orient(c, d, a) != Sign::negative)
+                stop(FailureKind::flips_exceeded, a, "a flip's quadrilateral is not convex");
+            if (budget-- == 0) stop(FailureKind::flips_exceeded, a, "too many flips");
+            const std::int32_t t1 = e / 3, t2 = f / 3;
+            flip(e);
+            for (const std::int32_t h : {3 * t1, 3 * t1 + 1, 3 * t2, 3 * t2 + 1})
+                queue.push_back(h);
+        }
+    }
+
+    /// A half-edge of edge a-b (a -> b, or b -> a on the boundary), or -1.
+    std::int32_t find_edge(std::uint32_t a, std::uint32_t b) const {
+        std::int32_t found = none;
+        for_fan(a, [&](std::int32_t h) {
+            if (to(h) == b)
+                found = h;
+            else if (from(prv(h)) == b)
+                found = prv(h);
+            return found != none;
+        });
+        return found;
+    }
+
+    // ---- pieces on half-edges -------------------------------------------------------------
+
+    struct Carry {
+        std::uint32_t segment;
+        std::uint32_t node;  ///< the chain node whose piece this edge is
+        std::int32_t next;   ///< the next entry of the edge's list, or -1
+    };
+    struct Node {
+        std::uint32_t vertex;
+        std::uint32_t next;  ///< the next node of the chain, or end
+    };
+    static constexpr std::uint32_t end_of_chain = std::numeric_limits<std::uint32_t>::max();
+
+    /// The pieces half-edge e carries.
+    void carried(std::int32_t e, std::vector<Carry>& out) const {
+        out.clear();
+        for (std::int32_t c = seg(e); c >= 0; c = carry_[static_cast<std::size_t>(c)].next)
+            out.push_back(carry_[static_cast<std::size_t>(c)]);
+    }
+    /// Makes the edge of half-edge e (both half-edges) carry the piece of `node` of s.
+    void add_piece(std::int32_t e, std::uint32_t s, std::uint32_t node) {
+        carry_.push_back({s, node, seg(e)});
+        const auto c = static_cast<std::int32_t>(carry_.size() - 1);
+        seg_[static_cast<std::size_t>(e)] = c;
+        if (twin(e) >= 0) seg_[static_cast<std::size_t>(twin(e))] = c;
+    }
+    void clear_segments(std::int32_t e) {
+        seg_[static_cast<std::size_t>(e)] = none;
+        if (twin(e) >= 0) seg_[static_cast<std::size_t>(twin(e))] = none;
+    }
+    /// Inserts vertex x after `node` in its chain; returns the new node.
+    std::uint32_t split_node(std::uint32_t node, std::uint32_t x) {
+        nodes_.push_back({x, nodes_[node].next});
+        const auto m = static_cast<std::uint32_t>(nodes_.size() - 1);
+        nodes_[node].next = m;
+        return m;
+    }
+    std::uint32_t after(std::uint32_t node) const { return nodes_[nodes_[node].next].vertex; }
+
+    // ---- walking -----------------------------------------------------------------------------
+
+    /// Calls f(h) for every half-edge h out of v (one per triangle around v):
+    /// counter-clockwise from out_[v] to the boundary, then clockwise from out_[v].
+    /// f returns true to stop. Bounded by the number of triangles.
+    template <class F>
+    void for_fan(std::uint32_t v, F&& f) const {
+        const std::int32_t start = out_[v];
+        if (start < 0) return;
+        std::size_t budget = tri_.size() / 3 + 1;
+        std::int32_t h = start;
+        for (;;) {
+            if (f(h)) return;
+            const std::int32_t g = twin(prv(h));
+            if (g < 0) break;
+            if (g == start) return;  // around an interior vertex
+            h = g;
+            if (budget-- == 0)
+                stop(FailureKind::constraint_inconsistent, v, "a vertex's fan does not close");
+        }
+        h = start;
+        for (;;) {
+            const std::int32_t g = twin(h);
+            if (g < 0) return;
+            h = nxt(g);
+            if (f(h)) return;
+            if (budget-- == 0)
+                stop(FailureKind::constraint_inconsistent, v, "a vertex's fan does not close");
+        }
+    }
+
+    /// The boundary half-edge after / before boundary half-edge e.
+    std::int32_t next_boundary(std::int32_t e) const {
+        std::int32_t h = nxt(e);
+        for (std::size_t budget = tri_.size() / 3 + 1; twin(h) >= 0; h = nxt(twin(h)))
+            if (budget-- == 0)
+                stop(FailureKind::constraint_inconsistent, from(h), "the boundary does not close");
+        return h;
+    }
+    std::int32_t prev_boundary(std::int32_t e) const {
+        std::int32_t h = prv(e);
+        for (std::size_t budget = tri_.size() / 3 + 1; twin(h) >= 0; h = prv(twin(h)))
+            if (budget-- == 0)
+                stop(FailureKind::constraint_inconsistent, from(h), "the boundary does not close");
+        return h;
+    }
+
+    enum class Where { inside, on_edge, on_vertex, outside };
+    struct Located {
+        Where where;
+        std::int32_t e;   ///< inside: a half-edge of the triangle; on_edge, outside: the edge
+        std::uint32_t v;  ///< on_vertex: the vertex
+    };
+
+    /// Where q lies, by a remembering stochastic walk from triangle t (every edge that q
+    /// is strictly right of leads out; the first edge tested rotates pseudo-randomly, so
+    /// the walk ends on any triangulation, Delaunay or not). Bounded.
+    Located locate(Point2 q, std::int32_t t, std::size_t index) {
+        std::int32_t entered = none;
+        for (std::size_t steps = 0;; ++steps) {
+            if (steps > 4 * tri_.size() / 3 + 64)
+                stop(FailureKind::location_exceeded, index,
+                     "a walk to a crossing point did not end");
+            for (int i = 0; i < 3; ++i)
+                if (pts_[from(3 * t + i)] == q)
+                    return {Where::on_vertex, 3 * t + i, from(3 * t + i)};
+            rng_ ^= rng_ << 13;
+            rng_ ^= rng_ >> 7;
+            rng_ ^= rng_ << 17;
+            const int first = static_cast<int>(rng_ % 3);
+            std::int32_t zero = none;
+            int zeros = 0;
+            bool moved = false;
+            for (int j = 0; j < 3 && !moved; ++j) {
+                const std::int32_t e = 3 * t + (first + j) % 3;
+                if (e == entered) continue;
+                const Sign o = k_.orient2d(pts_[from(e)], pts_[to(e)], q);
+                if (o == Sign::negative) {
+                    if (twin(e) < 0) return {Where::outside, e, 0};
+                    entered = twin(e);
+                    t = entered / 3;
+                    moved = true;
+                } else if (o == Sign::zero) {
+                    ++zeros;
+                    zero = e;
+                }
+            }
+            if (moved) continue;
+            if (zeros == 0) return {Where::inside, 3 * t, 0};
+            if (zeros == 1) return {Where::on_edge, zero, 0};
+            // q on two edge lines of a triangle is its shared vertex, which it is not.
+            if (entered == none || zeros > 1)
+                stop(FailureKind::location_inconsistent, index,
+                     "a crossing point is on two edge lines of a triangle but not a vertex");
+        }
+    }
+
+    /// Joins new vertex x, outside the boundary, to every boundary edge that sees it
+    /// strictly, starting from boundary half-edge e. Returns the half-edges opposite x.
+    void hull_insert(std::int32_t e, std::uint32_t x, std::vector<std::int32_t>& opposite) {
+        // The visible chain, in boundary order: back from e, then forward.
+        std::vector<std::int32_t> chain{e};
+        const std::size_t cap = tri_.size() + 3;
+        for (std::int32_t h = prev_boundary(e);
+             h != e && orient(from(h), to(h), x) == Sign::negative; h = prev_boundary(h)) {
+            chain.insert(chain.begin(), h);
+            if (chain.size() > cap)
+                stop(FailureKind::constraint_inconsistent, x, "a point sees the whole boundary");
+        }
+        for (std::int32_t h = next_boundary(e);
+             h != chain.front() && orient(from(h), to(h), x) == Sign::negative;
+             h = next_boundary(h)) {
+            chain.push_back(h);
+            if (chain.size() > cap)
+                stop(FailureKind::constraint_inconsistent, x, "a point sees the whole boundary");
+        }
+        // Triangle (v_i, v_(i-1), x) on boundary half-edge v_(i-1) -> v_i.
+        std::int32_t previous = none;
+        for (const std::int32_t h : chain) {
+            const std::int32_t t = new_triangle();
+            write(t, {to(h), from(h), x}, {seg(h), none, none},
+                  {h, previous < 0 ? none : 3 * previous + 2, none});
+            if (previous >= 0) link(3 * previous + 2, 3 * t + 1);
+            previous = t;
+            opposite.push_back(3 * t);
+        }
+    }
+
+    /// Inserts q as a vertex (or finds it), walking from triangle t; `lines` are the four
+    /// vertices whose lines it is the crossing of, `pair` the two segments. A point on a
+    /// segment's piece splits the piece: the edge is freed for the flips, and the two
+    /// halves go to restores_, to be inserted again before anything else.
+    std::uint32_t insert_point(Point2 q, std::int32_t t, std::array<std::uint32_t, 2> pair,
+                               std::array<std::uint32_t, 4> lines) {
+        const Located at = locate(q, t, pts_.size());
+        if (at.where == Where::on_vertex) return at.v;
+        if (added() >= max_added_)
+            stop(FailureKind::too_many_crossings, pts_.size(),
+                 "more than " + std::to_string(max_added_) + " crossing points" +
+                     (natural_cap_ ? " (more than the pairs of segments: rounded crossings "
+                                     "keep bending pieces across one another)"
+                                   : ""));
+        const auto x = static_cast<std::uint32_t>(pts_.size());
+        pts_.push_back(q);
+        out_.push_back(none);
+        vertex_of_.push_back(x);
+        crossings_.push_back(pair);
+        crossing_lines_.push_back(lines);
+        std::vector<std::int32_t>& opposite = stack_;
+        opposite.clear();
+        if (at.where == Where::inside) {
+            for (const std::int32_t h : split_triangle(at.e / 3, x)) opposite.push_back(h);
+        } else if (at.where == Where::on_edge) {
+            carried(at.e, on_edge_);
+            clear_segments(at.e);
+            for (const std::int32_t h : split_edge(at.e, x))
+                if (h >= 0) opposite.push_back(h);
+            for (const Carry& c : on_edge_) split_piece(c, x, restores_);
+        } else {
+            hull_insert(at.e, x, opposite);
+        }
+        legalize(opposite, x);
+        return x;
+    }
+
+    // ---- segments ------------------------------------------------------------------------------
+
+    /// Collinear b and c lie in the same direction from a (exact: coordinate comparisons).
+    bool same_direction(std::uint32_t a, std::uint32_t b, std::uint32_t c) const noexcept {
+        const Point2 &p = pts_[a], &q = pts_[b], &r = pts_[c];
+        const auto side = [](double from, double to) { return (to > from) - (to < from); };
+        return side(p.x, q.x) == side(p.x, r.x) && side(p.y, q.y) == side(p.y, r.y);
+    }
+
+    /// Where the ray from u towards w leaves u: a neighbour x on it (returned with its
+    /// edge), or the half-edge R -> L opposite u that it crosses (R strictly right of it,
+    /// L strictly left).
+    struct Exit {
+        std::int32_t edge = none;  ///< u -> x or x -> u: the edge to x
+        std::uint32_t x = 0;
+        std::int32_t crossed = none;
+    };
+    Exit find_exit(std::uint32_t u, std::uint32_t w) {
+        Exit exit;
+        for_fan(u, [&](std::int32_t h) {
+            const std::uint32_t p = to(h), q = from(prv(h));
+            const Sign op = orient(u, w, p), oq = orient(u, w, q);
+            if (op == Sign::zero && same_direction(u, p, w)) {
+                exit.edge = h;
+                exit.x = p;
+                return true;
+            }
+            if (oq == Sign::zero && same_direction(u, q, w)) {
+                exit.edge = prv(h);
+                exit.x = q;
+                return true;
+            }
+            if (op == Sign::negative && oq == Sign::positive) {
+                exit.crossed = nxt(h);
+                return true;
+            }
+            return false;
+        });
+        if (exit.edge == none && exit.crossed == none)
+            stop(FailureKind::constraint_inconsistent, u,
+                 "no triangle around a segment's vertex lies towards its other end");
+        return exit;
+    }
+
+    struct Piece {
+        std::uint32_t u, w, s;
+        std::uint32_t node;  ///< s's chain node at u, followed by the node at w
+    };
+
+    /// The piece of carry c is split at vertex x (unless x is one of its ends): the two
+    /// halves are pushed on `to`, the first half last (it is inserted first).
+    void split_piece(const Carry& c, std::uint32_t x, std::vector<Piece>& to) {
+        const std::uint32_t a = nodes_[c.node].vertex, b = after(c.node);
+        if (x == a || x == b) {
+            to.push_back({a, b, c.segment, c.node});
+            return;
+        }
+        const std::uint32_t m = split_node(c.node, x);
+        to.push_back({x, b, c.segment, m});
+        to.push_back({a, x, c.segment, c.node});
+    }
+
+    /// Inserts segment s from vertex a to vertex b, with every piece a crossing creates.
+    void insert_segment(std::uint32_t a, std::uint32_t b, std::uint32_t s) {
+        const auto first = static_cast<std::uint32_t>(nodes_.size());
+        nodes_.push_back({a, first + 1});
+        nodes_.push_back({b, end_of_chain});
+        head_[s] = first;
+        pending_.clear();
+        pending_.push_back({a, b, s, first});
+        while (!pending_.empty()) {
+            const Piece piece = pending_.back();
+            pending_.pop_back();
+            advance(piece);
+        }
+    }
+
+    /// Inserts piece u -> w of segment s up to its end, or up to a crossing with a
+    /// segment (which pushes the pieces that replace it).
+    void advance(Piece piece) {
+        std::uint32_t u = piece.u, node = piece.node;
+        const std::uint32_t w = piece.w, s = piece.s;
+        std::vector<std::int32_t>& crossed = crossed_;
+        for (std::size_t hops = 0; u != w; ++hops) {
+            if (hops > pts_.size())
+                stop(FailureKind::constraint_inconsistent, u, "a segment's vertices repeat");
+            const Exit exit = find_exit(u, w);
+            if (exit.edge != none) {  // along an existing edge, to x (w or a vertex before it)
+                add_piece(exit.edge, s, node);
+                if (exit.x != w) node = split_node(node, exit.x);
+                u = exit.x;
+                continue;
+            }
+            // Walk across the triangles the piece crosses, up to w or a vertex on it. A piece
+            // bent by a rounded crossing (an end off the segment's line) still ends at every
+            // vertex exactly on the segment that the walk meets: the rest is inserted again
+            // as two straight pieces through it.
+            const bool bent = !on_line(s, u) || !on_line(s, w);
+            crossed.clear();
+            std::int32_t e = exit.crossed;
+            std::uint32_t end = 0;
+            for (;;) {
+                if (bent) {
+                    for (const std::uint32_t v : {from(e), to(e)}) {
+                        if (v != u && v != w && on_segment(s, v)) {
+                            const std::uint32_t m = split_node(node, v);
+                            pending_.push_back({v, w, s, m});
+                            pending_.push_back({u, v, s, node});
+                            return;
+                        }
+                    }
+                }
+                if (seg(e) != none) {
+                    cross(e, {u, w, s, node});
+                    return;
+                }
+                crossed.push_back(e);
+                if (crossed.size() > tri_.size() / 3 + 1)
+                    stop(FailureKind::constraint_inconsistent, u,
+                         "a segment crosses every triangle");
+                const std::int32_t f = twin(e);
+                if (f < 0)
+                    stop(FailureKind::constraint_inconsistent, u, "a segment leaves the hull");
+                const std::uint32_t v = from(prv(f));
+                if (v == w) {
+                    end = v;
+                    break;
+                }
+                const Sign o = orient(u, w, v);
+                if (o == Sign::zero) {
+                    end = v;
+                    break;
+                }
+                e = o == Sign::positive ? nxt(f) : prv(f);
+            }
+            carry_.push_back({s, node, none});
+            insert_by_flips(u, end, static_cast<std::int32_t>(carry_.size() - 1));
+            if (end != w) node = split_node(node, end);
+            u = end;
+        }
+    }
+
+    /// Piece p of segment s crosses half-edge e, which carries pieces of other segments: a
+    /// vertex at the crossing (the rounded crossing of the two input segments, or of the
+    /// two pieces when rounding has bent them so far that the input segments no longer
+    /// cross properly), and the pieces split there.
+    void cross(std::int32_t e, Piece p) {
+        // Every crossing makes a vertex but where segments meet at a vertex already made,
+        // at most once per segment and vertex in exact arithmetic; far more events than
+        // vertices and segments means the pieces are going round in circles.
+        if (++events_ > 8 * (added() + segments_->size()) + 64)
+            stop(FailureKind::constraint_inconsistent, p.s,
+                 "crossings repeat without making vertices");
+        std::vector<Carry> others;
+        carried(e, others);
+        std::uint32_t t = others.front().segment;
+        for (const Carry& c : others) t = std::min(t, c.segment);
+        const std::uint32_t r = from(e), l = to(e);
+        std::array<std::uint32_t, 4> lines{end_vertex(p.s, 0), end_vertex(p.s, 1), end_vertex(t, 0),
+                                           end_vertex(t, 1)};
+        const bool of_segments = properly_cross(lines);
+        if (!of_segments) lines = {p.u, p.w, r, l};
+        Intersection i =
+            intersection(pts_[lines[0]], pts_[lines[1]], pts_[lines[2]], pts_[lines[3]]);
+        // A crossing of the segments that rounds onto an end of one of the two pieces
+        // splits the other there, and the pieces no longer meet. When the same pair does
+        // that a second time at the same point, rounding has bent the pieces into a cycle
+        // (each split makes the other pair cross again): the crossing of the two pieces
+        // themselves, which lies inside both, breaks it.
+        if (i.ok() && of_segments) {
+            for (const std::uint32_t end : {p.u, p.w, r, l}) {
+                if (!(pts_[end] == i.point)) continue;
+                const std::array<std::uint32_t, 3> key{std::min(p.s, t), std::max(p.s, t), end};
+                if (!snapped_.insert(key).second) {
+                    lines = {p.u, p.w, r, l};
+                    i = intersection(pts_[p.u], pts_[p.w], pts_[r], pts_[l]);
+                }
+                break;
+            }
+        }
+        if (!i.ok() || !properly_cross(lines))
+            stop(FailureKind::constraint_inconsistent, p.s,
+                 "crossing pieces of segments do not meet");
+        clear_segments(e);
+        restores_.clear();
+        const std::uint32_t x =
+            insert_point(i.point, e / 3, {std::min(p.s, t), std::max(p.s, t)}, lines);
+        split_piece({p.s, p.node, none}, x, pending_);
+        for (const Carry& c : others) split_piece(c, x, pending_);
+        pending_.insert(pending_.end(), restores_.begin(), restores_.end());
+    }
+
+    std::uint32_t end_vertex(std::uint32_t s, int which) const {
+        const Segment& g = (*segments_)[s];
+        return vertex_of_[which == 0 ? g.a : g.b];
+    }
+    /// Vertex v lies exactly on the line of segment s / on the open segment s.
+    bool on_line(std::uint32_t s, std::uint32_t v) const {
+        return orient(end_vertex(s, 0), end_vertex(s, 1), v) == Sign::zero;
+    }
+    bool on_segment(std::uint32_t s, std::uint32_t v) const {
+        if (!on_line(s, v)) return false;
+        const Point2 a = pts_[end_vertex(s, 0)], b = pts_[end_vertex(s, 1)], p = pts_[v];
+        if (a.x != b.x) return std::min(a.x, b.x) < p.x && p.x < std::max(a.x, b.x);
+        return std::min(a.y, b.y) < p.y && p.y < std::max(a.y, b.y);
+    }
+    /// Segments ab and cd (by vertex) cross at a point interior to both.
+    bool properly_cross(const std::array<std::uint32_t, 4>& v) const {
+        const int ab_c = to_int(orient(v[0], v[1], v[2])), ab_d = to_int(orient(v[0], v[1], v[3]));
+        const int cd_a = to_int(orient(v[2], v[3], v[0])), cd_b = to_int(orient(v[2], v[3], v[1]));
+        return ab_c * ab_d < 0 && cd_a * cd_b < 0;
+    }
+
+    /// Makes u -> v an edge, the piece of carry entry `piece`, by flipping the edges it
+    /// crosses (crossed_, in order along it; none is a piece), then restores the
+    /// constrained Delaunay property around the new edges (Sloan 1993). A crossed edge whose
+    /// quadrilateral is strictly convex is flipped, and its new diagonal goes back to the
+    /// list while it still crosses u -> v; one that is not convex waits at the end of the
+    /// list. Some crossed edge always has a convex quadrilateral (Sloan's lemma), so every
+    /// round flips, and the list empties. Unlike removing the crossed triangles and filling
+    /// the two sides, this needs no care for a vertex whose every triangle the segment
+    /// crosses (it hangs inside one side, joined to the rest by one edge).
+    void insert_by_flips(std::uint32_t u, std::uint32_t v, std::int32_t piece) {
+        std::vector<std::array<std::uint32_t, 2>>& list = crossing_edges_;
+        list.clear();
+        for (const std::int32_t e : crossed_) list.push_back({from(e), to(e)});
+        std::vector<std::array<std::uint32_t, 2>>& fresh = fresh_edges_;
+        fresh.clear();
+        const std::size_t k = list.size();
+        std::size_t budget = 8 * (k + 1) * (k + 1) + 64;
+        for (std::size_t head = 0; head < list.size(); ++head) {
+            if (budget-- == 0)
+                stop(FailureKind::constraint_inconsistent, u,
+                     "flipping the edges a segment crosses does not end");
+            const auto [a, b] = list[head];
+            const std::int32_t e = find_edge(a, b);
+            if (e < 0 || twin(e) < 0)
+                stop(FailureKind::constraint_inconsistent, u,
+                     "an edge a segment crosses has vanished");
+            const std::uint32_t c = from(prv(e)), d = from(prv(twin(e)));
+            const std::uint32_t p = from(e), q = to(e);  // e may run b -> a
+            if (orient(c, d, q) != Sign::positive || orient(c, d, p) != Sign::negative) {
+                list.push_back({a, b});  // not convex: later
+                continue;
+            }
+            flip(e);
+            const int side_c = to_int(orient(u, v, c)), side_d = to_int(orient(u, v, d));
+            (side_c * side_d < 0 ? list : fresh).push_back({c, d});
+        }
+        const std::int32_t h = find_edge(u, v);
+        if (h < 0)
+            stop(FailureKind::constraint_inconsistent, u, "flips did not make a segment an edge");
+        seg_[static_cast<std::size_t>(h)] = piece;
+        if (twin(h) >= 0) seg_[static_cast<std::size_t>(twin(h))] = piece;
+        // The new edges, found again (flips move edges between slots), then Lawson.
+        std::vector<std::int32_t>& queue = stack_;
+        queue.clear();
+        for (const auto& [c, d] : fresh) {
+            const std::int32_t e = find_edge(c, d);
+            if (e >= 0) queue.push_back(e);
+        }
+        flip_queue(queue);
+    }
+    // ---- the result ------------------------------------------------------------------------
+
+    /// Runs every segment and writes the result.
+    void run(std::span<const Segment> segments, ConstrainedTriangulation& out) {
+        segments_ = &segments;
+        // Two segments cross at most once, so exact crossings make at most s (s - 1) / 2
+        // points; the allowance beyond that is for crossings of bent pieces. A run that
+        // needs more is one where rounding keeps bending pieces across each other, and it
+        // stops instead of growing without end.
+        const std::size_t m = segments.size();
+        const std::size_t pairs = m < (std::size_t{1} << 31) ? m * (m - (m > 0)) / 2 : max_added_;
+        natural_cap_ = pairs + 2 * m + 64 < max_added_;
+        if (natural_cap_) max_added_ = pairs + 2 * m + 64;
+        head_.assign(segments.size(), end_of_chain);
+        for (std::size_t s = 0; s < segments.size(); ++s) {
+            const std::uint32_t a = vertex_of_[segments[s].a], b = vertex_of_[segments[s].b];
+            if (a != b) insert_segment(a, b, static_cast<std::uint32_t>(s));
+        }
+        if (events_ > 0) {
+            for (std::size_t s = 0; s < segments.size(); ++s)
+                cut_loops(static_cast<std::uint32_t>(s));
+            flip_everything();
+        }
+        out.input_count = input_count_;
+        // The chains, in the order of their nodes.
+        out.chain_offsets.assign(1, 0);
+        out.chain_vertices.clear();
+        std::vector<std::array<std::uint32_t, 2>> pieces;
+        for (std::size_t s = 0; s < segments.size(); ++s) {
+            if (head_[s] == end_of_chain) {
+                out.chain_vertices.push_back(vertex_of_[segments[s].a]);
+            } else {
+                std::size_t count = 0;
+                for (std::uint32_t n = head_[s]; n != end_of_chain; n = nodes_[n].next) {
+                    if (++count > nodes_.size())
+                        stop(FailureKind::constraint_inconsistent, s,
+                             "a segment's chain does not end");
+                    const std::uint32_t v = nodes_[n].vertex;
+                    if (nodes_[n].next != end_of_chain) {
+                        const std::uint32_t w = after(n);
+                        pieces.push_back({std::min(v, w), std::max(v, w)});
+                    }
+                    out.chain_vertices.push_back(v);
+                }
+            }
+            out.chain_offsets.push_back(static_cast<std::uint32_t>(out.chain_vertices.size()));
+        }
+        std::sort(pieces.begin(), pieces.end());
+        pieces.erase(std::unique(pieces.begin(), pieces.end()), pieces.end());
+        out.constraints = std::move(pieces);
+        out.crossings = std::move(crossings_);
+        out.crossing_lines = std::move(crossing_lines_);
+        // The boundary cycle from its lexicographically smallest vertex.
+        Triangulation& t = out.triangulation;
+        std::int32_t first = none;
+        for (std::size_t e = 0; e < twin_.size(); ++e) {
+            if (twin_[e] >= 0) continue;
+            const auto h = static_cast<std::int32_t>(e);
+            if (first < 0 || lex_less(pts_[from(h)], pts_[from(first)])) first = h;
+        }
+        t.hull.clear();
+        if (first >= 0) {
+            std::int32_t h = first;
+            do {
+                t.hull.push_back(from(h));
+                if (t.hull.size() > twin_.size())
+                    stop(FailureKind::constraint_inconsistent, from(h),
+                         "the boundary does not close");
+                h = next_boundary(h);
+            } while (h != first);
+        }
+        t.triangles = std::move(tri_);
+        t.halfedges = std::move(twin_);
+        t.vertex_of_input = std::move(vertex_of_);
+        t.duplicates = std::move(duplicates_);
+        t.collinear = false;
+        out.points = std::move(pts_);
+    }
+    /// Where rounding has bent pieces back across each other, a chain can pass a vertex
+    /// twice; the loop between the two visits is cut out (the chain keeps its first visit
+    /// and continues from the second), and its pieces stop carrying the segment. An edge
+    /// that no longer carries any segment is then judged by the final flips.
+    void cut_loops(std::uint32_t s) {
+        if (head_[s] == end_of_chain) return;
+        seen_.resize(pts_.size(), {0, 0});
+        const std::uint32_t stamp = s + 1;
+        std::size_t count = 0;
+        for (std::uint32_t n = head_[s]; n != end_of_chain; n = nodes_[n].next) {
+            if (++count > nodes_.size())
+                stop(FailureKind::constraint_inconsistent, s, "a segment's chain does not end");
+            const std::uint32_t x = nodes_[n].vertex;
+            auto& [mark, first] = seen_[x];
+            if (mark != stamp) {
+                mark = stamp;
+                first = n;
+                continue;
+            }
+            // first -> ... -> n is a loop through x: drop its pieces.
+            for (std::uint32_t m = first; m != n; m = nodes_[m].next) {
+                drop_piece(s, m);
+                if (m != first) seen_[nodes_[m].vertex] = {0, 0};
+            }
+            nodes_[first].next = nodes_[n].next;
+            n = first;
+        }
+    }
+    /// The edge of node m's piece stops carrying segment s.
+    void drop_piece(std::uint32_t s, std::uint32_t m) {
+        const std::int32_t e = find_edge(nodes_[m].vertex, after(m));
+        if (e < 0)
+            stop(FailureKind::constraint_inconsistent, s, "a piece of a segment is not an edge");
+        std::int32_t head = none;
+        std::vector<Carry> kept;
+        carried(e, kept);
+        for (auto it = kept.rbegin(); it != kept.rend(); ++it) {
+            if (it->segment == s && it->node == m) continue;
+            carry_.push_back({it->segment, it->node, head});
+            head = static_cast<std::int32_t>(carry_.size() - 1);
+        }
+        seg_[static_cast<std::size_t>(e)] = head;
+        if (twin(e) >= 0) seg_[static_cast<std::size_t>(twin(e))] = head;
+    }
+
+    static bool lex_less(Point2 a, Point2 b) noexcept {
+        return a.x < b.x || (a.x == b.x && a.y < b.y);
+    }
+
+private:
+    const K& k_;
+    std::vector<Point2> pts_;
+    std::vector<std::uint32_t> tri_;
+    std::vector<std::int32_t> twin_;
+    std::vector<std::uint32_t> vertex_of_;
+    std::vector<std::uint32_t> duplicates_;
+    std::size_t input_count_;
+    std::size_t max_added_;
+    std::vector<std::int32_t> seg_;
+    std::vector<std::int32_t> out_;
+    std::vector<std::array<std::uint32_t, 2>> crossings_;
+    std::vector<std::array<std::uint32_t, 4>> crossing_lines_;
+    std::vector<Carry> carry_, on_edge_;
+    std::vector<Node> nodes_;
+    std::vector<std::uint32_t> head_;
+    struct Seen {
+        std::uint32_t mark, first;
+    };
+    std::vector<Seen> seen_;
+    const std::span<const Segment>* segments_ = nullptr;
+    std::size_t events_ = 0;
+    bool natural_cap_ = false;
+    std::set<std::array<std::uint32_t, 3>> snapped_;
+    std::uint64_t rng_ = 0x9e3779b97f4a7c15ULL;
+    // Scratch, reused.
+    std::vector<Piece> pending_, restores_;
+    std::vector<std::int32_t> stack_, crossed_;
+    std::vector<std::array<std::uint32_t, 2>> crossing_edges_, fresh_edges_;
+};
+
+}  // namespace detail
+}  // namespace exidel::delaunay
