@@ -19,17 +19,23 @@
 //
 // Where rounding moves a crossing point by up to half an ulp, a piece may cross another
 // segment or pass exactly through a vertex that the exact segment missed; that is resolved
-// the same way (a further crossing of the two input segments, rounded, or a split at the
-// vertex), so the pieces never cross. Pieces are built by inserting the segments in input
-// order; without such cascades (crossings farther apart than a few ulps) the output does
-// not depend on the order of the segments.
+// the same way (a further crossing, rounded: of the two input segments, or of the two pieces
+// when their segments no longer cross properly or keep rounding onto the same end; or a
+// split at the vertex), a bent piece still stops at every vertex exactly on its segment, and
+// a chain that comes back to a vertex has the loop cut out, so the pieces never cross.
+// Pieces are built by inserting the segments in input order; without such cascades
+// (crossings farther apart than a few ulps) the output does not depend on the order of the
+// segments. Near-collinear segments that cross within ulps of one another can still give an
+// output the certifier rejects or a too_many_crossings failure (tests/delaunay/
+// constrained_test.cpp, DISABLED_NearlyParallelSegmentsAreCertified).
 //
 // How. The Delaunay triangulation of P (triangulate(), any algorithm of Options) is the
-// start. Each segment is inserted from its first end: the triangles it crosses are removed
-// and the two pseudo-polygons on its sides retriangulated (Anglada 1997), a vertex on it
-// ends a piece, and a constrained edge it crosses is split at the rounded crossing, which
-// is inserted as a point (a split and Lawson's flips that never flip a constraint). Every
-// loop is bounded: with an inexact kernel a run gives a result or a typed Failure.
+// start. Each segment is inserted from its first end: a walk finds the edges it crosses, a
+// vertex on it ends a piece, the crossed edges are flipped away (Sloan 1993) and Lawson's
+// flips, which never flip a piece, restore the constrained Delaunay property; a piece it
+// crosses is split at the rounded crossing, which is inserted as a point (a split and
+// Lawson's flips). Every loop is bounded: with an inexact kernel a run gives a result or a
+// typed Failure.
 #pragma once
 
 #include <algorithm>
