@@ -308,7 +308,8 @@ rc::Gen<Input> gen_nearly_parallel() {
 }
 
 /// Points of a family with random segments. `near_collinear` chooses the families whose
-/// points lie within ulps of lines (near_*, kettner, and mixed, which combines them), where random
+/// points lie within ulps of lines (near_*, kettner, and mixed and duplicates, which draw
+/// from them), where random
 /// segments run nearly parallel and rounded crossings cascade, or every other family.
 rc::Gen<Input> gen_family_input(std::size_t max_n, bool near_collinear = false) {
     return rc::gen::exec([max_n, near_collinear] {
@@ -425,6 +426,35 @@ RC_GTEST_PROP(Constrained, DISABLED_NearlyParallelSegmentsAreCertified, ()) {
     }
     const delaunay::Certificate c = certify_constrained(in.points, in.segments, r.cdt);
     if (!c.ok()) RC_FAIL(c.summary());
+}
+
+// Found by ExactKernelsGiveIdenticalArrays (duplicates family, 2000 cases): points within
+// ulps of the line y = 3x, some subnormal; the rounded crossings of segments 1, 4, 5 and 7
+// round onto one another's ends in a cycle that the repeated-snap rule does not break, and
+// the run stops with constraint_inconsistent ("crossings repeat without making vertices").
+// Disabled with the near-collinear property above until snap rounding lands.
+TEST(Constrained, DISABLED_RegressionSubnormalNearCollinearCycle) {
+    const std::vector<Point2> pts{{-1.306590672787121e-17, -3.919772018361363e-17},
+                                  {-1.306590672787121e-17, -3.919772018361363e-17},
+                                  {0, 0},
+                                  {9.8813129168249309e-324, 4.9406564584124654e-324},
+                                  {0, 1.4821969375237396e-323},
+                                  {-1.306590672787121e-17, -3.919772018361363e-17},
+                                  {1.0587911840678754e-21, 3.1763735522036263e-21},
+                                  {4.9406564584124654e-324, 0},
+                                  {0, 1.4821969375237396e-323},
+                                  {-1.306590672787121e-17, -3.919772018361363e-17},
+                                  {-1.306590672787121e-17, -3.919772018361363e-17},
+                                  {0, 1.9762625833649862e-323},
+                                  {-5.2939559203393781e-22, -1.5881867761018131e-21},
+                                  {0, 0},
+                                  {0, 0}};
+    const std::vector<Segment> segs{{0, 0},  {3, 12}, {0, 0}, {0, 0},
+                                    {0, 11}, {4, 0},  {0, 0}, {0, 11}};
+    const ConstrainedResult r = run(pts, segs);
+    ASSERT_TRUE(r.ok()) << r.failure->message;
+    const delaunay::Certificate c = certify_constrained(pts, segs, r.cdt);
+    EXPECT_TRUE(c.ok()) << c.summary();
 }
 
 // ---- cases ---------------------------------------------------------------------------------

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -551,7 +552,10 @@ public:
             for (;;) {
                 if (bent) {
                     for (const std::uint32_t v : {from(e), to(e)}) {
-                        if (v != u && v != w && on_segment(s, v)) {
+                        if (v != u && v != w && between(s, u, v, w) && on_segment(s, v)) {
+                            if (++events_ > 8 * (added() + segments_->size()) + 64)
+                                stop(FailureKind::constraint_inconsistent, s,
+                                     "bent pieces keep meeting vertices of their segment");
                             const std::uint32_t m = split_node(node, v);
                             pending_.push_back({v, w, s, m});
                             pending_.push_back({u, v, s, node});
@@ -652,6 +656,15 @@ public:
         const Point2 a = pts_[end_vertex(s, 0)], b = pts_[end_vertex(s, 1)], p = pts_[v];
         if (a.x != b.x) return std::min(a.x, b.x) < p.x && p.x < std::max(a.x, b.x);
         return std::min(a.y, b.y) < p.y && p.y < std::max(a.y, b.y);
+    }
+    /// v lies strictly between u and w along the axis on which segment s extends most
+    /// (each split of a bent piece at a vertex then narrows the piece, so it ends).
+    bool between(std::uint32_t s, std::uint32_t u, std::uint32_t v, std::uint32_t w) const {
+        const Point2 a = pts_[end_vertex(s, 0)], b = pts_[end_vertex(s, 1)];
+        const bool by_x = std::abs(b.x - a.x) >= std::abs(b.y - a.y);
+        const double pu = by_x ? pts_[u].x : pts_[u].y, pv = by_x ? pts_[v].x : pts_[v].y,
+                     pw = by_x ? pts_[w].x : pts_[w].y;
+        return std::min(pu, pw) < pv && pv < std::max(pu, pw);
     }
     /// Segments ab and cd (by vertex) cross at a point interior to both.
     bool properly_cross(const std::array<std::uint32_t, 4>& v) const {
