@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <initializer_list>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -256,6 +257,17 @@ void lift(mpz_ptr r, double v, int grid) noexcept {
     if (d.negative) mpz_neg(r, r);
 }
 
+/// The exponent of the last significand bit shared by every value: each is an integer
+/// multiple of 2^grid, the smallest exponent among the nonzero ones (0 when all are zero).
+int common_grid(std::initializer_list<double> values) noexcept {
+    int grid = 1 << 20;
+    for (double v : values) {
+        const detail::Binary64 d = detail::decode(v);
+        if (d.significand != 0) grid = std::min(grid, d.exponent);
+    }
+    return grid == (1 << 20) ? 0 : grid;
+}
+
 /// num / den * 2^exp2 (den > 0) rounded to nearest, ties to even, with gradual underflow
 /// and overflow to infinity: the rounding IEEE 754 prescribes for the exact value.
 double round_quotient(mpz_srcptr num, mpz_srcptr den, long exp2) noexcept {
@@ -299,13 +311,7 @@ double round_quotient(mpz_srcptr num, mpz_srcptr den, long exp2) noexcept {
 Circumcenter circumcenter_exact(Point2 a, Point2 b, Point2 c) noexcept {
     if (!finite(a) || !finite(b) || !finite(c))
         return {{nan, nan}, CircumcenterStatus::non_finite_input, CircumcenterStage::exact};
-    // Every coordinate is an integer multiple of 2^grid, the smallest exponent among them.
-    int grid = 1 << 20;
-    for (double v : {a.x, a.y, b.x, b.y, c.x, c.y}) {
-        const detail::Binary64 d = detail::decode(v);
-        if (d.significand != 0) grid = std::min(grid, d.exponent);
-    }
-    if (grid == (1 << 20)) grid = 0;  // every coordinate is zero
+    const int grid = common_grid({a.x, a.y, b.x, b.y, c.x, c.y});
     Int ax, ay, bx, by, cx, cy;
     lift(ax.get(), a.x, grid);
     lift(ay.get(), a.y, grid);
@@ -362,13 +368,7 @@ std::string_view to_string(IntersectionStatus status) noexcept {
 Intersection intersection(Point2 a, Point2 b, Point2 c, Point2 d) noexcept {
     if (!finite(a) || !finite(b) || !finite(c) || !finite(d))
         return {{nan, nan}, IntersectionStatus::non_finite_input};
-    // Every coordinate is an integer multiple of 2^grid, the smallest exponent among them.
-    int grid = 1 << 20;
-    for (double v : {a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y}) {
-        const detail::Binary64 e = detail::decode(v);
-        if (e.significand != 0) grid = std::min(grid, e.exponent);
-    }
-    if (grid == (1 << 20)) grid = 0;  // every coordinate is zero
+    const int grid = common_grid({a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y});
     Int ax, ay, ux, uy, vx, vy, wx, wy;
     lift(ax.get(), a.x, grid);
     lift(ay.get(), a.y, grid);

@@ -35,18 +35,6 @@ Triangulation triangulated(const std::vector<Point2>& pts) {
     return std::move(r.triangulation);
 }
 
-// Recomputes every twin from the triangles (used after editing triangles by hand).
-void rebuild_twins(Triangulation& t) {
-    std::map<std::pair<std::uint32_t, std::uint32_t>, std::int32_t> by_edge;
-    for (std::size_t e = 0; e < t.triangles.size(); ++e) {
-        by_edge[{t.triangles[e], t.triangles[next_halfedge(e)]}] = static_cast<std::int32_t>(e);
-    }
-    for (std::size_t e = 0; e < t.triangles.size(); ++e) {
-        const auto it = by_edge.find({t.triangles[next_halfedge(e)], t.triangles[e]});
-        t.halfedges[e] = it == by_edge.end() ? -1 : it->second;
-    }
-}
-
 // An interior edge whose quadrilateral is strictly convex and not cocircular: flipping it
 // keeps a valid triangulation that is not Delaunay.
 std::size_t flippable_edge(const std::vector<Point2>& pts, const Triangulation& t) {
@@ -78,7 +66,7 @@ TEST(Certify, CatchesAFlippedDelaunayEdge) {
     const std::size_t t0 = 3 * (e / 3), t1 = 3 * (tw / 3);
     t.triangles[t0] = c, t.triangles[t0 + 1] = a, t.triangles[t0 + 2] = d;
     t.triangles[t1] = d, t.triangles[t1 + 1] = b, t.triangles[t1 + 2] = c;
-    rebuild_twins(t);
+    test::rebuild_twins(t);
     const Certificate cert = certify(pts, t);
     ASSERT_FALSE(cert.ok());
     EXPECT_EQ(cert.total_findings, 1u) << cert.summary();
@@ -117,7 +105,7 @@ TEST(Certify, CatchesAReversedTriangle) {
     const auto pts = uniform(40, 4);
     Triangulation t = triangulated(pts);
     std::swap(t.triangles[3 * 5 + 1], t.triangles[3 * 5 + 2]);
-    rebuild_twins(t);
+    test::rebuild_twins(t);
     const Certificate cert = certify(pts, t);
     EXPECT_FALSE(cert.ok());
     EXPECT_TRUE(cert.has(FindingKind::not_ccw) || cert.has(FindingKind::twin_mismatch))
@@ -153,7 +141,7 @@ TEST(Certify, CatchesADroppedTriangleAsABrokenBoundary) {
     }
     t.triangles.erase(t.triangles.begin() + 3 * tri, t.triangles.begin() + 3 * tri + 3);
     t.halfedges.resize(t.triangles.size());
-    rebuild_twins(t);
+    test::rebuild_twins(t);
     const Certificate cert = certify(pts, t);
     EXPECT_TRUE(cert.has(FindingKind::boundary_broken)) << cert.summary();
 }
@@ -166,7 +154,7 @@ TEST(Certify, CatchesAConcaveBoundary) {
     Triangulation t;
     t.triangles = {0, 1, 3, 1, 2, 3, 3, 2, 4};
     t.halfedges.assign(9, -1);
-    rebuild_twins(t);
+    test::rebuild_twins(t);
     t.hull = {0, 1, 2, 4, 3};
     const Certificate cert = certify(pts, t);
     EXPECT_TRUE(cert.has(FindingKind::boundary_not_convex)) << cert.summary();
@@ -222,7 +210,7 @@ TEST(Certify, FindingsNameTheirTriangleEdgeAndPoints) {
     const std::size_t t0 = 3 * (e / 3), t1 = 3 * (tw / 3);
     t.triangles[t0] = c, t.triangles[t0 + 1] = a, t.triangles[t0 + 2] = d;
     t.triangles[t1] = d, t.triangles[t1 + 1] = b, t.triangles[t1 + 2] = c;
-    rebuild_twins(t);
+    test::rebuild_twins(t);
     const Certificate cert = certify(pts, t);
     ASSERT_EQ(cert.total_findings, 1u) << cert.summary();
     const Finding& f = cert.findings.front();

@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "delaunay_support.hpp"
 #include "exidel/delaunay/certify.hpp"
 #include "exidel/delaunay/constrained.hpp"
 #include "exidel/delaunay/triangulate.hpp"
@@ -587,18 +588,6 @@ TEST(ConstrainedCertify, CollinearPointsHaveTheChainsEdges) {
                      {FindingKind::chain_broken}));
 }
 
-// Recomputes every twin from the triangles (used after editing triangles by hand).
-void rebuild_twins(Triangulation& t) {
-    std::map<std::pair<std::uint32_t, std::uint32_t>, std::int32_t> by_edge;
-    for (std::size_t e = 0; e < t.triangles.size(); ++e) {
-        by_edge[{t.triangles[e], t.triangles[next_halfedge(e)]}] = static_cast<std::int32_t>(e);
-    }
-    for (std::size_t e = 0; e < t.triangles.size(); ++e) {
-        const auto it = by_edge.find({t.triangles[next_halfedge(e)], t.triangles[e]});
-        t.halfedges[e] = it == by_edge.end() ? -1 : it->second;
-    }
-}
-
 TEST(ConstrainedCertify, EveryEdgeButOneIsAConstraint) {
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> u(-1, 1);
@@ -645,7 +634,7 @@ TEST(ConstrainedCertify, EveryEdgeButOneIsAConstraint) {
     const std::size_t t0 = 3 * (e / 3), t1 = 3 * (tw / 3);
     tri.triangles[t0] = c, tri.triangles[t0 + 1] = a, tri.triangles[t0 + 2] = d;
     tri.triangles[t1] = d, tri.triangles[t1 + 1] = b, tri.triangles[t1 + 2] = c;
-    rebuild_twins(tri);
+    test::rebuild_twins(tri);
     const Certificate flipped =
         certify_constrained(pts, segments, make_cdt(pts, pts.size(), tri, chains));
     EXPECT_TRUE(only(flipped, {FindingKind::not_delaunay}));

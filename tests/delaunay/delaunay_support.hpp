@@ -28,6 +28,19 @@ namespace exidel::test {
 using Edge = std::pair<std::uint32_t, std::uint32_t>;  // (smaller, larger) input index
 using Tri = std::array<std::uint32_t, 3>;              // sorted vertex triple
 
+// Recomputes every twin from the triangles (used after editing triangles by hand).
+inline void rebuild_twins(delaunay::Triangulation& t) {
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::int32_t> by_edge;
+    for (std::size_t e = 0; e < t.triangles.size(); ++e) {
+        by_edge[{t.triangles[e], t.triangles[delaunay::next_halfedge(e)]}] =
+            static_cast<std::int32_t>(e);
+    }
+    for (std::size_t e = 0; e < t.triangles.size(); ++e) {
+        const auto it = by_edge.find({t.triangles[delaunay::next_halfedge(e)], t.triangles[e]});
+        t.halfedges[e] = it == by_edge.end() ? -1 : it->second;
+    }
+}
+
 inline Edge make_edge(std::uint32_t a, std::uint32_t b) { return a < b ? Edge{a, b} : Edge{b, a}; }
 inline Tri make_tri(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
     Tri t{a, b, c};

@@ -96,13 +96,7 @@ public:
     std::vector<std::uint32_t> take_first() { return std::move(first_); }
 
 private:
-    // The points a finding names, of any integer types.
-    struct Ids {
-        std::vector<std::int64_t> v;
-        Ids() = default;
-        template <class... I>
-        Ids(I... i) : v{static_cast<std::int64_t>(i)...} {}
-    };
+    using Ids = detail::FindingPoints;
 
     template <class I, class J>
     void add(FindingKind kind, I index, J other, std::int64_t triangle, Ids points,

@@ -72,12 +72,7 @@ public:
     }
 
 private:
-    struct Ids {
-        std::vector<std::int64_t> v;
-        Ids() = default;
-        template <class... I>
-        Ids(I... i) : v{static_cast<std::int64_t>(i)...} {}
-    };
+    using Ids = detail::FindingPoints;
 
     template <class I, class J>
     void add(FindingKind kind, I index, J other, Ids points, std::string message) {

@@ -14,6 +14,14 @@
 
 namespace exidel::delaunay::detail {
 
+/// The points a finding names, from indices of any integer types.
+struct FindingPoints {
+    std::vector<std::int64_t> v;
+    FindingPoints() = default;
+    template <class... I>
+    FindingPoints(I... i) : v{static_cast<std::int64_t>(i)...} {}
+};
+
 struct MeshCertificate {
     Certificate certificate;
     /// For every point, the smallest index with the same coordinates; empty when a point
