@@ -405,6 +405,49 @@ Intersection intersection(Point2 a, Point2 b, Point2 c, Point2 d) noexcept {
     return {p, overflow ? IntersectionStatus::overflow : IntersectionStatus::ok};
 }
 
+Sign compare_segment_distance(Point2 p, Point2 a, Point2 b, double r) noexcept {
+    if (!finite(p) || !finite(a) || !finite(b) || !std::isfinite(r) || r < 0) return Sign::positive;
+    const int grid = common_grid({p.x, p.y, a.x, a.y, b.x, b.y, r});
+    Int ax, ay, dx, dy, wx, wy, rr;
+    lift(ax.get(), a.x, grid);
+    lift(ay.get(), a.y, grid);
+    lift(dx.get(), b.x, grid);
+    lift(dy.get(), b.y, grid);
+    lift(wx.get(), p.x, grid);
+    lift(wy.get(), p.y, grid);
+    lift(rr.get(), r, grid);
+    // d = b - a, w = p - a.
+    mpz_sub(dx.get(), dx.get(), ax.get());
+    mpz_sub(dy.get(), dy.get(), ay.get());
+    mpz_sub(wx.get(), wx.get(), ax.get());
+    mpz_sub(wy.get(), wy.get(), ay.get());
+    Int dot, dd, lhs, rhs;
+    mpz_mul(dot.get(), wx.get(), dx.get());
+    mpz_addmul(dot.get(), wy.get(), dy.get());
+    mpz_mul(dd.get(), dx.get(), dx.get());
+    mpz_addmul(dd.get(), dy.get(), dy.get());
+    mpz_mul(rhs.get(), rr.get(), rr.get());  // r^2
+    if (mpz_sgn(dot.get()) <= 0 || mpz_sgn(dd.get()) == 0) {
+        // Nearest to a: |w|^2 against r^2.
+        mpz_mul(lhs.get(), wx.get(), wx.get());
+        mpz_addmul(lhs.get(), wy.get(), wy.get());
+    } else if (mpz_cmp(dot.get(), dd.get()) >= 0) {
+        // Nearest to b: |w - d|^2 against r^2.
+        mpz_sub(wx.get(), wx.get(), dx.get());
+        mpz_sub(wy.get(), wy.get(), dy.get());
+        mpz_mul(lhs.get(), wx.get(), wx.get());
+        mpz_addmul(lhs.get(), wy.get(), wy.get());
+    } else {
+        // Nearest to the line: (w x d)^2 / |d|^2 against r^2, times |d|^2 > 0.
+        mpz_mul(lhs.get(), wx.get(), dy.get());
+        mpz_submul(lhs.get(), wy.get(), dx.get());
+        mpz_mul(lhs.get(), lhs.get(), lhs.get());
+        mpz_mul(rhs.get(), rhs.get(), dd.get());
+    }
+    const int c = mpz_cmp(lhs.get(), rhs.get());
+    return c > 0 ? Sign::positive : c < 0 ? Sign::negative : Sign::zero;
+}
+
 namespace {
 inline Circumcenter decide(Point2 a, Point2 b, Point2 c) noexcept {
     if (!finite(a) || !finite(b) || !finite(c))

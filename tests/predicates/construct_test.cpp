@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include <CGAL/squared_distance_2.h>
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 
@@ -284,6 +285,67 @@ TEST(Intersection, ParallelAndNonFiniteInputAreReported) {
     const Intersection tie = intersection({1, -1}, {1 + 0x1p-52, 1}, {0, 0}, {4, 0});
     EXPECT_TRUE(tie.ok());
     EXPECT_EQ(tie.point.x, 1.0);
+}
+
+// ---- compare_segment_distance ------------------------------------------------------------
+
+// CGAL's exact squared distance from a point to a segment (over Gmpq) against r^2.
+Sign oracle_segment_distance(Point2 p, Point2 a, Point2 b, double r) {
+    using CK = CGAL::Simple_cartesian<CGAL::Gmpq>;
+    const CK::Point_2 cp(p.x, p.y), ca(a.x, a.y), cb(b.x, b.y);
+    const CGAL::Gmpq d2 = (a.x == b.x && a.y == b.y)
+                              ? CGAL::squared_distance(cp, ca)
+                              : CGAL::squared_distance(cp, CK::Segment_2(ca, cb));
+    const CGAL::Gmpq r2 = CGAL::Gmpq(r) * CGAL::Gmpq(r);
+    return d2 < r2 ? Sign::negative : d2 > r2 ? Sign::positive : Sign::zero;
+}
+
+TEST(SegmentDistance, AgreesWithCgalOnEveryFamilyAndScale) {
+    for (const testing::FamilyInfo& f : testing::all_families()) {
+        const bool ok = rc::check("compare_segment_distance, " + std::string(f.name), [&] {
+            const auto [p, a, b] = *testing::gen_query3(f.family);
+            const int k = *rc::gen::inRange(-1100, 1001);
+            const auto move = [&](Point2 q) {
+                return Point2{std::ldexp(q.x, k), std::ldexp(q.y, k)};
+            };
+            const Point2 sp = move(p), sa = move(a), sb = move(b);
+            for (const Point2 q : {sp, sa, sb}) RC_PRE(std::isfinite(q.x) && std::isfinite(q.y));
+            // r: near the true distance (long double), one of its neighbours, or arbitrary.
+            const long double dx = static_cast<long double>(sb.x) - sa.x,
+                              dy = static_cast<long double>(sb.y) - sa.y;
+            const long double guess = std::fabs(dx * (static_cast<long double>(sp.y) - sa.y) -
+                                                dy * (static_cast<long double>(sp.x) - sa.x)) /
+                                      std::sqrt(dx * dx + dy * dy);
+            double r = std::isfinite(static_cast<double>(guess)) ? static_cast<double>(guess) : 1.0;
+            r = *rc::gen::element(r, std::nextafter(r, 0.0), std::nextafter(r, HUGE_VAL), 0.0,
+                                  std::fabs(sp.x));
+            RC_PRE(std::isfinite(r));
+            RC_ASSERT(compare_segment_distance(sp, sa, sb, r) ==
+                      oracle_segment_distance(sp, sa, sb, r));
+        });
+        EXPECT_TRUE(ok) << f.name;
+    }
+}
+
+TEST(SegmentDistance, EndsLineAndDegenerateCases) {
+    // (2, 3) is 3 from the segment (0, 0)-(4, 0) (its foot is inside); (-3, 4) and (7, 4) are 5
+    // from its ends.
+    for (const int k : {0, -1070, 1000}) {
+        const auto s = [k](double v) { return std::ldexp(v, k); };
+        const Point2 a{s(0), s(0)}, b{s(4), s(0)};
+        EXPECT_EQ(compare_segment_distance({s(2), s(3)}, a, b, s(3)), Sign::zero);
+        EXPECT_EQ(compare_segment_distance({s(2), s(3)}, a, b, s(2.5)), Sign::positive);
+        EXPECT_EQ(compare_segment_distance({s(2), s(3)}, a, b, s(3.5)), Sign::negative);
+        EXPECT_EQ(compare_segment_distance({s(-3), s(4)}, a, b, s(5)), Sign::zero);
+        EXPECT_EQ(compare_segment_distance({s(7), s(4)}, a, b, s(5)), Sign::zero);
+        EXPECT_EQ(compare_segment_distance({s(7), s(4)}, a, b, s(4)), Sign::positive);
+        EXPECT_EQ(compare_segment_distance({s(3), s(4)}, a, a, s(5)), Sign::zero);  // a == b
+    }
+    EXPECT_EQ(compare_segment_distance({0, 0}, {0, 0}, {1, 0}, 0), Sign::zero);
+    EXPECT_EQ(compare_segment_distance({0, 0x1p-1074}, {-1, 0}, {1, 0}, 0), Sign::positive);
+    EXPECT_EQ(compare_segment_distance({std::nan(""), 0}, {0, 0}, {1, 0}, 1), Sign::positive);
+    EXPECT_EQ(compare_segment_distance({0, 0}, {0, 0}, {1, 0}, -1), Sign::positive);
+    EXPECT_EQ(compare_segment_distance({0, 0}, {0, 0}, {HUGE_VAL, 0}, 1), Sign::positive);
 }
 
 }  // namespace

@@ -290,18 +290,14 @@ private:
         return std::min(a.y, b.y) < x.y && x.y < std::max(a.y, b.y);
     }
 
-    // Whether x, the chain vertex of segment s between chain vertices u and w, is allowed
-    // there. It is when it lies exactly on the open segment, and otherwise where rounding
-    // put it:
+    // Whether chain vertex x of segment s is one of its anchors: a point exactly on the open
+    // segment, or where rounding put a crossing of s:
     //   - an added point whose listed pair of segments includes s (its own crossing);
-    //   - exactly on the open segment from u to w: a piece that rounding had bent was split
-    //     where a vertex or a crossing of other segments fell exactly on it;
     //   - the rounded crossing of s with a segment t whose chain passes through x: where
     //     several segments cross at one point only the first pair found is listed, and a
     //     rounded crossing may fall on an existing vertex (even an end of t). Only vertices
     //     off the segment, rare, try these candidates.
-    bool chain_vertex_allowed(std::size_t s, std::uint32_t u, std::uint32_t x,
-                              std::uint32_t w) const {
+    bool is_anchor(std::size_t s, std::uint32_t x) const {
         const Point2 a = input_[segments_[s].a], b = input_[segments_[s].b];
         const Point2 px = cdt_.points[x];
         if (on_open_segment(a, b, px)) return true;
@@ -309,7 +305,6 @@ private:
             const auto [t0, t1] = cdt_.crossings[x - cdt_.input_count];
             if (t0 == s || t1 == s) return true;
         }
-        if (on_open_segment(cdt_.points[u], cdt_.points[w], px)) return true;
         const auto from = std::lower_bound(on_chains_.begin(), on_chains_.end(), Pair{x, 0});
         for (auto it = from; it != on_chains_.end() && (*it)[0] == x; ++it) {
             const std::uint32_t t = (*it)[1];
@@ -327,6 +322,7 @@ private:
         // doubles back on itself, which no straight segment does.
         constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
         std::vector<std::uint32_t> visited_by(cdt_.points.size(), none);
+        std::vector<std::size_t> loose;  // the current chain's vertices that are not anchors
         for (std::size_t s = 0; s < segments_.size(); ++s) {
             const std::size_t begin = cdt_.chain_offsets[s], end = cdt_.chain_offsets[s + 1];
             const std::uint32_t va = first[segments_[s].a], vb = first[segments_[s].b];
@@ -354,6 +350,7 @@ private:
                 }
                 continue;
             }
+            loose.clear();
             for (std::size_t j = begin; j < end; ++j) {
                 const std::uint32_t w = c[j];
                 const std::size_t k = j - begin;  // its position in the chain
@@ -378,10 +375,25 @@ private:
                             ") was visited before: the chain doubles back");
                 }
                 visited_by[w] = static_cast<std::uint32_t>(s);
-                if (j > begin && j + 1 < end && !chain_vertex_allowed(s, c[j - 1], w, c[j + 1])) {
-                    add(FindingKind::chain_off_segment, s, w, {w},
-                        segment_name(s) + ": chain vertex " + str(k) + " (point " + str(w) +
-                            ") is not on the segment");
+                if (j > begin && j + 1 < end) {
+                    if (!is_anchor(s, w)) loose.push_back(j);
+                }
+            }
+            // A vertex that is neither is where a piece bent by rounding met a vertex or
+            // another bent piece: it must lie within the segment's tolerance of it.
+            if (!loose.empty()) {
+                const Point2 a = input_[segments_[s].a], b = input_[segments_[s].b];
+                const double tolerance = chain_tolerance(a, b);
+                for (const std::size_t j : loose) {
+                    if (compare_segment_distance(cdt_.points[c[j]], a, b, tolerance) !=
+                        Sign::positive)
+                        continue;
+                    add(FindingKind::chain_off_segment, s, c[j], {c[j]},
+                        segment_name(s) + ": chain vertex " + str(j - begin) + " (point " +
+                            str(c[j]) +
+                            ") is neither on the segment nor a crossing of it, and lies farther "
+                            "from it than the tolerance " +
+                            str(tolerance));
                 }
             }
         }

@@ -97,6 +97,13 @@ struct Intersection {
 /// too. Always exact integers (GMP): constrained triangulations call it once per crossing.
 Intersection intersection(Point2 a, Point2 b, Point2 c, Point2 d) noexcept;
 
+/// The sign of dist(p, ab) - r: the Euclidean distance from p to the closed segment ab
+/// (to the point a when a == b) compared with r >= 0, exactly. The coordinates and r are
+/// lifted to integers on their common binary grid and the squares compared there (with the
+/// projection's parameter t = (p - a).(b - a) / |b - a|^2 deciding between the ends and the
+/// line): no rounding at all. Sign::positive for a NaN or infinite input or r < 0.
+Sign compare_segment_distance(Point2 p, Point2 a, Point2 b, double r) noexcept;
+
 /// Stage 3 alone: the exact rational circumcentre rounded once (the reference the fast
 /// path is tested against; always correct, much slower).
 Circumcenter circumcenter_exact(Point2 a, Point2 b, Point2 c) noexcept;

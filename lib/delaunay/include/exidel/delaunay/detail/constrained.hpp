@@ -611,7 +611,38 @@ public:
         const std::uint32_t r = from(e), l = to(e);
         std::array<std::uint32_t, 4> lines{end_vertex(p.s, 0), end_vertex(p.s, 1), end_vertex(t, 0),
                                            end_vertex(t, 1)};
-        const bool of_segments = properly_cross(lines);
+        // Segments that share the crossed piece only because rounding bent them onto it
+        // (not all on one line) cross p at different points: the crossing is then the
+        // pieces' own, a point of the shared piece for every one of them.
+        const bool shared_line = std::all_of(others.begin(), others.end(), [&](const Carry& c) {
+            return on_line(t, end_vertex(c.segment, 0)) && on_line(t, end_vertex(c.segment, 1));
+        });
+        const bool of_segments = shared_line && properly_cross(lines);
+        // Pieces that cross only because rounding bent them (a cascade: their segments do not
+        // cross there) are first snapped to a vertex that is already there: an end of the
+        // crossed piece within chain_tolerance() of p's segment joins p's chain, or an end of
+        // p within the tolerance of every segment of the crossed piece joins theirs. No
+        // vertex is made, so a cascade among near-collinear segments runs out of vertices
+        // instead of making ever more.
+        if (!of_segments) {
+            // (By index, not by side: the choice must not depend on orientation, so that a
+            // mirrored input gives the mirrored output.)
+            for (const std::uint32_t v : {std::min(r, l), std::max(r, l)}) {
+                if (!near_segment(p.s, v) || on_chain(p.s, v)) continue;
+                split_piece({p.s, p.node, none}, v, pending_);
+                return;
+            }
+            for (const std::uint32_t v : {p.u, p.w}) {
+                if (!std::all_of(others.begin(), others.end(), [&](const Carry& c) {
+                        return near_segment(c.segment, v) && !on_chain(c.segment, v);
+                    }))
+                    continue;
+                clear_segments(e);
+                pending_.push_back(p);
+                for (const Carry& c : others) split_piece(c, v, pending_);
+                return;
+            }
+        }
         if (!of_segments) lines = {p.u, p.w, r, l};
         Intersection i =
             intersection(pts_[lines[0]], pts_[lines[1]], pts_[lines[2]], pts_[lines[3]]);
@@ -656,6 +687,21 @@ public:
         const Point2 a = pts_[end_vertex(s, 0)], b = pts_[end_vertex(s, 1)], p = pts_[v];
         if (a.x != b.x) return std::min(a.x, b.x) < p.x && p.x < std::max(a.x, b.x);
         return std::min(a.y, b.y) < p.y && p.y < std::max(a.y, b.y);
+    }
+    /// Vertex v is on the chain of segment s (a walk of the chain: only cascades ask).
+    bool on_chain(std::uint32_t s, std::uint32_t v) const {
+        std::size_t count = 0;
+        for (std::uint32_t n = head_[s]; n != end_of_chain; n = nodes_[n].next) {
+            if (nodes_[n].vertex == v) return true;
+            if (++count > nodes_.size())
+                stop(FailureKind::constraint_inconsistent, s, "a segment's chain does not end");
+        }
+        return false;
+    }
+    /// Vertex v lies within chain_tolerance() of segment s (exact).
+    bool near_segment(std::uint32_t s, std::uint32_t v) const {
+        const Point2 a = pts_[end_vertex(s, 0)], b = pts_[end_vertex(s, 1)];
+        return compare_segment_distance(pts_[v], a, b, chain_tolerance(a, b)) != Sign::positive;
     }
     /// v lies strictly between u and w along the axis on which segment s extends most
     /// (each split of a bent piece at a vertex then narrows the piece, so it ends).
@@ -744,6 +790,7 @@ public:
         if (events_ > 0) {
             for (std::size_t s = 0; s < segments.size(); ++s)
                 cut_loops(static_cast<std::uint32_t>(s));
+            mark_pieces();
             flip_everything();
         }
         out.input_count = input_count_;
@@ -827,6 +874,26 @@ public:
             }
             nodes_[first].next = nodes_[n].next;
             n = first;
+        }
+    }
+    /// After cascades, the edges that are pieces are marked again from the chains alone:
+    /// an edge left marked by a piece that a later split or cut replaced would otherwise
+    /// escape the final flips without being a constraint.
+    void mark_pieces() {
+        seg_.assign(seg_.size(), none);
+        carry_.clear();
+        for (std::uint32_t s = 0; s < head_.size(); ++s) {
+            std::size_t count = 0;
+            for (std::uint32_t n = head_[s]; n != end_of_chain && nodes_[n].next != end_of_chain;
+                 n = nodes_[n].next) {
+                if (++count > nodes_.size())
+                    stop(FailureKind::constraint_inconsistent, s, "a segment's chain does not end");
+                const std::int32_t e = find_edge(nodes_[n].vertex, after(n));
+                if (e < 0)
+                    stop(FailureKind::constraint_inconsistent, s,
+                         "a piece of a segment is not an edge");
+                add_piece(e, s, n);
+            }
         }
     }
     /// The edge of node m's piece stops carrying segment s.
