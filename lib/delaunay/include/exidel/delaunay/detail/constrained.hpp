@@ -617,7 +617,27 @@ public:
         const bool shared_line = std::all_of(others.begin(), others.end(), [&](const Carry& c) {
             return on_line(t, end_vertex(c.segment, 0)) && on_line(t, end_vertex(c.segment, 1));
         });
-        const bool of_segments = shared_line && properly_cross(lines);
+        bool of_segments = shared_line && properly_cross(lines);
+        // A crossing of the segments that rounds onto a vertex already on one of the chains
+        // (not an end of the crossing pieces) would bend that chain back to it, a loop:
+        // among segments crossing within ulps of one another such splits go round in
+        // circles. The pieces are then treated as a cascade.
+        if (of_segments) {
+            const Intersection first =
+                intersection(pts_[lines[0]], pts_[lines[1]], pts_[lines[2]], pts_[lines[3]]);
+            if (first.ok()) {
+                const Located at = locate(first.point, e / 3, pts_.size());
+                if (at.where == Where::on_vertex) {
+                    const std::uint32_t v = at.v;
+                    const bool loops =
+                        (v != p.u && v != p.w && on_chain(p.s, v)) ||
+                        (v != r && v != l &&
+                         std::any_of(others.begin(), others.end(),
+                                     [&](const Carry& c) { return on_chain(c.segment, v); }));
+                    if (loops) of_segments = false;
+                }
+            }
+        }
         // Pieces that cross only because rounding bent them (a cascade: their segments do not
         // cross there) are first snapped to a vertex that is already there: an end of the
         // crossed piece within chain_tolerance() of p's segment joins p's chain, or an end of
