@@ -445,17 +445,36 @@ RC_GTEST_PROP(Constrained, InexactKernelsGiveAResultOrATypedFailure, ()) {
 }
 
 // Nearly parallel segments a few ulps apart (and random segments among points within ulps
-// of a line) cross one another at shallow angles, and their rounded crossings cascade: every run
-// gives a result or a typed failure, but a few percent of outputs are not yet certified (a chain
-// vertex off its segment) and the pieces depend on the order of the segments. Disabled until
-// cascades are resolved by snap rounding; run with --gtest_also_run_disabled_tests to measure.
-RC_GTEST_PROP(Constrained, DISABLED_NearlyParallelSegmentsAreCertified, ()) {
-    const Input in =
-        *rc::gen::oneOf(gen_nearly_parallel(), gen_bundle(), gen_family_input(30, true));
+// of a line) cross one another at shallow angles, and their rounded crossings cascade. Not
+// compared with CGAL: cascades add vertices that exact constructions do not need. With the
+// exact kernel a run gives a certified result, or (when `strict` is false) a cascade that
+// does not settle may end in too_many_crossings; never an uncertified output.
+void check_certified(const Input& in, bool strict) {
     const ConstrainedResult r = run(in.points, in.segments);
-    if (!r.ok()) RC_FAIL(r.failure->message);
+    if (!r.ok()) {
+        if (strict || r.failure->kind != FailureKind::too_many_crossings)
+            RC_FAIL(r.failure->message);
+        return;
+    }
     const delaunay::Certificate c = certify_constrained(in.points, in.segments, r.cdt);
     if (!c.ok()) RC_FAIL(c.summary());
+}
+
+RC_GTEST_PROP(Constrained, NearlyParallelSegmentsAreCertifiedOrTooManyCrossings, ()) {
+    check_certified(
+        *rc::gen::oneOf(gen_nearly_parallel(), gen_bundle(), gen_family_input(30, true)), false);
+}
+
+// The goal, not yet met: every such run certified. Failures are all too_many_crossings: about
+// 1 case in 13,000 of the near-collinear families (up to 8 segments), and 3%, 20% and 52% of
+// bundles of 10-19, 20-29 and 30-39 segments within 64 ulps of a line. Disabled until
+// cascades are resolved by a rounding that settles (snap rounding); run with
+// --gtest_also_run_disabled_tests to measure.
+RC_GTEST_PROP(Constrained, DISABLED_NearlyParallelSegmentsAreCertified, ()) {
+    check_certified(*rc::gen::oneOf(gen_nearly_parallel(), gen_family_input(30, true)), true);
+}
+RC_GTEST_PROP(Constrained, DISABLED_BundlesOfSegmentsAreCertified, ()) {
+    check_certified(*gen_bundle(), true);
 }
 
 // Found by ExactKernelsGiveIdenticalArrays (duplicates family, 2000 cases): points within
@@ -487,7 +506,7 @@ TEST(Constrained, RegressionSubnormalNearCollinearCycle) {
     EXPECT_TRUE(c.ok()) << c.summary();
 }
 
-// Found by DISABLED_NearlyParallelSegmentsAreCertified (shrunk by RapidCheck): segments a few
+// Found by NearlyParallelSegmentsAreCertified (shrunk by RapidCheck): segments a few
 // ulps apart that cross within ulps of one another. Each once failed: a crossing of a piece
 // shared by two segments listed only one of them; a vertex met by a bent piece was judged
 // against chain neighbours that later splits had replaced; a chain snapped back through its
