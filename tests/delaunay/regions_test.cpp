@@ -172,8 +172,8 @@ std::vector<Point2> star(double cx, double cy, int count, int lo, int hi, bool c
     for (int i = 0; i < count; ++i) {
         const double angle = (i + *rc::gen::inRange(0, 50) / 100.0) * step;
         const double radius = *rc::gen::inRange(lo, hi);
-        p.push_back({std::round(cx + radius * std::cos(angle)),
-                     std::round(cy + radius * std::sin(angle))});
+        p.push_back(
+            {std::round(cx + radius * std::cos(angle)), std::round(cy + radius * std::sin(angle))});
     }
     if (clockwise) std::reverse(p.begin(), p.end());
     return p;
@@ -193,7 +193,8 @@ RC_GTEST_PROP(Regions, DomainAreaIsThePolygonsAreaExactly, ()) {
         // Hole centres 2000 apart on a circle of radius 1400: holes of radius < 700 are
         // disjoint and inside the shell (radius >= 3000).
         const double a = h * 2 * std::numbers::pi / 3;
-        const double hx = std::round(cx + 1400 * std::cos(a)), hy = std::round(cy + 1400 * std::sin(a));
+        const double hx = std::round(cx + 1400 * std::cos(a)),
+                     hy = std::round(cy + 1400 * std::sin(a));
         const std::vector<Point2> hole = star(hx, hy, *rc::gen::inRange(3, 24), 200, 600, true);
         r.ring(hole);
         area += twice_area(hole);  // negative: clockwise
@@ -201,8 +202,10 @@ RC_GTEST_PROP(Regions, DomainAreaIsThePolygonsAreaExactly, ()) {
     }
     const int extra = *rc::gen::inRange(0, 40);
     for (int i = 0; i < extra; ++i)
-        r.points.push_back({cx + *rc::gen::inRange(-2000, 2000), cy + *rc::gen::inRange(-2000, 2000)});
-    const ConstrainedResult res = delaunay::constrained_delaunay<AdaptiveKernel>(r.points, r.segments);
+        r.points.push_back(
+            {cx + *rc::gen::inRange(-2000, 2000), cy + *rc::gen::inRange(-2000, 2000)});
+    const ConstrainedResult res =
+        delaunay::constrained_delaunay<AdaptiveKernel>(r.points, r.segments);
     RC_ASSERT(res.ok());
     RC_ASSERT(res.cdt.added_count() == 0u);
     for (const FillRule rule : {FillRule::even_odd, FillRule::non_zero}) {

@@ -7,7 +7,17 @@
 #include <utility>
 #include <vector>
 
+#include "inline_adaptive.hpp"
+
 namespace exidel::delaunay {
+
+// The adaptive kernel's filters inlined into the builder (inline_adaptive.hpp): the same
+// predicates, without a call per orientation.
+struct detail::InlineConstrainedKernel : detail::InlineAdaptiveKernel {};
+detail::InlineConstrainedKernel detail::ConstrainedRunKernel<AdaptiveKernel>::from(
+    const AdaptiveKernel&) {
+    return {};
+}
 
 #define EXIDEL_CONSTRAINED_INSTANTIATE(K, spelling, summary) \
     template ConstrainedResult constrained_delaunay<K>(      \

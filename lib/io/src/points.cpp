@@ -1,5 +1,6 @@
 // exidel I/O: the point readers and writers (formats: exidel/io/points.hpp).
 #include "exidel/io/points.hpp"
+#include "exidel/io/poly.hpp"
 
 #include <fcntl.h>
 #include <sys/mman.h>
@@ -353,70 +354,92 @@ long long node_integer(std::size_t line, std::string_view field, const std::stri
     return v;
 }
 
-PointFile parse_node(std::string_view data) {
-    PointFile file;
-    std::vector<Point2>& points = file.points;
-    std::vector<std::string_view> fields;
-    std::string error;
-    bool have_header = false;
-    long long expected = 0, attributes = 0, markers = 0, first_index = 0;
-    constexpr long long max_count = 0x7fffffff;
-    const std::size_t lines = for_each_line(data, [&](std::size_t number, std::string_view line) {
-        split_fields(strip_comment(line), fields, error, false);  // no commas: cannot fail
-        if (fields.empty()) return;
-        if (!have_header) {
+// Triangle's vertex section (a .node file, or the start of a .poly): the header
+// "n [dim [attributes [markers]]]" then n lines "index x y [attribute...] [marker]".
+// feed() takes every non-blank line until the section is complete.
+class VertexSection {
+public:
+    VertexSection(PointFile& file, std::size_t bytes) : file_(file), bytes_(bytes) {}
+
+    bool complete() const noexcept {
+        return have_header_ && static_cast<long long>(file_.points.size()) == expected_;
+    }
+    bool have_header() const noexcept { return have_header_; }
+    long long expected() const noexcept { return expected_; }
+
+    void feed(std::size_t number, const std::vector<std::string_view>& fields) {
+        if (!have_header_) {
             if (fields.size() > 4) {
                 throw ReadError::at_line(number,
                                          "the header is \"vertices [dimension "
                                          "[attributes [markers]]]\", got " +
                                              std::to_string(fields.size()) + " fields");
             }
-            expected = node_integer(number, fields[0], "number of vertices", 0, max_count);
+            expected_ = node_integer(number, fields[0], "number of vertices", 0, max_count);
             if (fields.size() > 1) node_integer(number, fields[1], "dimension", 2, 2);
             if (fields.size() > 2) {
-                attributes = node_integer(number, fields[2], "number of attributes", 0, 1 << 20);
+                attributes_ = node_integer(number, fields[2], "number of attributes", 0, 1 << 20);
             }
-            if (fields.size() > 3) markers = node_integer(number, fields[3], "markers", 0, 1);
-            have_header = true;
+            if (fields.size() > 3) markers_ = node_integer(number, fields[3], "markers", 0, 1);
+            have_header_ = true;
             // The header's count is not trusted for memory: at most one point per 4 bytes.
-            points.reserve(static_cast<std::size_t>(
-                std::min<long long>(expected, static_cast<long long>(data.size() / 4))));
+            file_.points.reserve(static_cast<std::size_t>(
+                std::min<long long>(expected_, static_cast<long long>(bytes_ / 4))));
             return;
         }
-        const auto k = static_cast<long long>(points.size());
-        if (k == expected) {
-            throw ReadError::at_line(
-                number,
-                "more vertex lines than the " + std::to_string(expected) + " the header announces");
-        }
-        const auto want = static_cast<std::size_t>(3 + attributes + markers);
+        const auto k = static_cast<long long>(file_.points.size());
+        const auto want = static_cast<std::size_t>(3 + attributes_ + markers_);
         if (fields.size() != want) {
             throw ReadError::at_line(
-                number, "expected " + std::to_string(want) + " fields (index x y" +
-                            (attributes ? " + " + std::to_string(attributes) + " attributes" : "") +
-                            (markers ? " + marker" : "") + "), got " +
-                            std::to_string(fields.size()));
+                number,
+                "expected " + std::to_string(want) + " fields (index x y" +
+                    (attributes_ ? " + " + std::to_string(attributes_) + " attributes" : "") +
+                    (markers_ ? " + marker" : "") + "), got " + std::to_string(fields.size()));
         }
         if (k == 0) {
-            first_index = node_integer(number, fields[0], "first vertex index", 0, 1);
+            first_index_ = node_integer(number, fields[0], "first vertex index", 0, 1);
+            file_.index_base = static_cast<unsigned>(first_index_);
         } else {
-            node_integer(number, fields[0], "vertex index", first_index + k, first_index + k);
+            node_integer(number, fields[0], "vertex index", first_index_ + k, first_index_ + k);
         }
-        points.push_back({coordinate(number, fields[1], "x"), coordinate(number, fields[2], "y")});
-        for (std::size_t a = 0; a < static_cast<std::size_t>(attributes); ++a) {
+        file_.points.push_back(
+            {coordinate(number, fields[1], "x"), coordinate(number, fields[2], "y")});
+        for (std::size_t a = 0; a < static_cast<std::size_t>(attributes_); ++a) {
             coordinate(number, fields[3 + a], "attribute");
         }
-        if (markers) {
-            node_integer(number, fields.back(), "boundary marker", INT32_MIN, INT32_MAX);
-        }
-    });
-    if (have_header && static_cast<long long>(points.size()) != expected) {
-        throw ReadError::at_line(std::max<std::size_t>(lines, 1),
-                                 "truncated: the file ends after " + std::to_string(points.size()) +
-                                     " of the " + std::to_string(expected) +
-                                     " vertices the header announces");
+        if (markers_) node_integer(number, fields.back(), "boundary marker", INT32_MIN, INT32_MAX);
     }
-    file.index_base = static_cast<unsigned>(first_index);
+
+    static constexpr long long max_count = 0x7fffffff;
+
+private:
+    PointFile& file_;
+    std::size_t bytes_;
+    bool have_header_ = false;
+    long long expected_ = 0, attributes_ = 0, markers_ = 0, first_index_ = 0;
+};
+
+PointFile parse_node(std::string_view data) {
+    PointFile file;
+    VertexSection vertices(file, data.size());
+    std::vector<std::string_view> fields;
+    std::string error;
+    const std::size_t lines = for_each_line(data, [&](std::size_t number, std::string_view line) {
+        split_fields(strip_comment(line), fields, error, false);  // no commas: cannot fail
+        if (fields.empty()) return;
+        if (vertices.complete()) {
+            throw ReadError::at_line(number, "more vertex lines than the " +
+                                                 std::to_string(vertices.expected()) +
+                                                 " the header announces");
+        }
+        vertices.feed(number, fields);
+    });
+    if (vertices.have_header() && !vertices.complete()) {
+        throw ReadError::at_line(
+            std::max<std::size_t>(lines, 1),
+            "truncated: the file ends after " + std::to_string(file.points.size()) + " of the " +
+                std::to_string(vertices.expected()) + " vertices the header announces");
+    }
     return file;
 }
 
@@ -462,6 +485,159 @@ void require_finite(std::span<const Point2> points) {
 }
 
 }  // namespace
+
+PolyFile parse_poly(std::string_view data) {
+    PolyFile poly;
+    PointFile vertices_file;
+    VertexSection vertices(vertices_file, data.size());
+    enum class Part { vertices, segments, holes, regions, done } part = Part::vertices;
+    long long count = -1, markers = 0, first = 0;  // of the current section; -1: header next
+    std::size_t in_part = 0;
+    std::vector<std::string_view> fields;
+    std::string error;
+    const auto index_in = [&](std::size_t number, std::string_view field, const char* what) {
+        // A section's first line numbers from 0 or 1, the others follow.
+        if (in_part == 0) {
+            first = node_integer(number, field, (std::string("first ") + what + " index").c_str(),
+                                 0, 1);
+        } else {
+            const auto k = static_cast<long long>(in_part);
+            node_integer(number, field, std::string(what) + " index", first + k, first + k);
+        }
+    };
+    const auto header = [&](std::size_t number, const char* what, std::size_t max_fields) {
+        if (fields.size() > max_fields) {
+            throw ReadError::at_line(number, std::string("the ") + what + " header has " +
+                                                 std::to_string(fields.size()) +
+                                                 " fields, expected at most " +
+                                                 std::to_string(max_fields));
+        }
+        count = node_integer(number, fields[0], std::string("number of ") + what, 0,
+                             VertexSection::max_count);
+        in_part = 0;
+    };
+    const std::size_t lines = for_each_line(data, [&](std::size_t number, std::string_view line) {
+        split_fields(strip_comment(line), fields, error, false);  // no commas: cannot fail
+        if (fields.empty()) return;
+        switch (part) {
+            case Part::vertices:
+                vertices.feed(number, fields);
+                if (vertices.have_header() && vertices.expected() == 0) {
+                    throw ReadError::at_line(
+                        number,
+                        "0 vertices: the vertices are in a separate .node file, which exidel "
+                        "does not read; put them in the .poly");
+                }
+                if (vertices.complete()) part = Part::segments;
+                return;
+            case Part::segments:
+                if (count < 0) {
+                    header(number, "segments", 2);
+                    if (fields.size() > 1)
+                        markers = node_integer(number, fields[1], "markers", 0, 1);
+                    poly.segments.reserve(static_cast<std::size_t>(
+                        std::min<long long>(count, static_cast<long long>(data.size() / 4))));
+                } else {
+                    const auto want = static_cast<std::size_t>(3 + markers);
+                    if (fields.size() != want) {
+                        throw ReadError::at_line(number, "expected " + std::to_string(want) +
+                                                             " fields (index endpoint endpoint" +
+                                                             (markers ? " marker" : "") +
+                                                             "), got " +
+                                                             std::to_string(fields.size()));
+                    }
+                    index_in(number, fields[0], "segment");
+                    const long long base = vertices_file.index_base;
+                    const long long last =
+                        base + static_cast<long long>(vertices_file.points.size()) - 1;
+                    const auto a = node_integer(number, fields[1], "segment endpoint", base, last);
+                    const auto b = node_integer(number, fields[2], "segment endpoint", base, last);
+                    poly.segments.push_back({static_cast<std::uint32_t>(a - base),
+                                             static_cast<std::uint32_t>(b - base)});
+                    if (markers) {
+                        poly.segment_markers.push_back(static_cast<std::int32_t>(node_integer(
+                            number, fields[3], "boundary marker", INT32_MIN, INT32_MAX)));
+                    }
+                    ++in_part;
+                }
+                if (static_cast<long long>(in_part) == count) {
+                    part = Part::holes;
+                    count = -1;
+                }
+                return;
+            case Part::holes:
+                if (count < 0) {
+                    header(number, "holes", 1);
+                } else {
+                    if (fields.size() != 3) {
+                        throw ReadError::at_line(number, "expected 3 fields (index x y), got " +
+                                                             std::to_string(fields.size()));
+                    }
+                    index_in(number, fields[0], "hole");
+                    poly.holes.push_back(
+                        {coordinate(number, fields[1], "x"), coordinate(number, fields[2], "y")});
+                    ++in_part;
+                }
+                if (static_cast<long long>(in_part) == count) {
+                    part = Part::regions;
+                    count = -1;
+                }
+                return;
+            case Part::regions:
+                if (count < 0) {
+                    header(number, "regions", 1);
+                } else {
+                    if (fields.size() != 4 && fields.size() != 5) {
+                        throw ReadError::at_line(
+                            number,
+                            "expected 4 or 5 fields (index x y attribute [maximum area]), got " +
+                                std::to_string(fields.size()));
+                    }
+                    index_in(number, fields[0], "region");
+                    PolyFile::Region r;
+                    r.seed = {coordinate(number, fields[1], "x"),
+                              coordinate(number, fields[2], "y")};
+                    r.attribute = coordinate(number, fields[3], "attribute");
+                    if (fields.size() == 5) {
+                        const double area = coordinate(number, fields[4], "maximum area");
+                        if (area > 0) r.max_area = area;  // Triangle: negative means none
+                    }
+                    poly.regions.push_back(r);
+                    ++in_part;
+                }
+                if (static_cast<long long>(in_part) == count) part = Part::done;
+                return;
+            case Part::done: throw ReadError::at_line(number, "unexpected line after the regions");
+        }
+    });
+    const auto end_line = std::max<std::size_t>(lines, 1);
+    if (part == Part::vertices) {
+        if (!vertices.have_header()) throw ReadError::at_line(end_line, "empty .poly file");
+        throw ReadError::at_line(end_line, "truncated: the file ends after " +
+                                               std::to_string(vertices_file.points.size()) +
+                                               " of the " + std::to_string(vertices.expected()) +
+                                               " vertices the header announces");
+    }
+    if (part == Part::segments || (part == Part::holes && count >= 0)) {
+        const char* what = part == Part::segments ? "segments" : "holes";
+        if (count < 0)
+            throw ReadError::at_line(end_line, std::string("truncated: no ") + what + " header");
+        throw ReadError::at_line(end_line, "truncated: the file ends after " +
+                                               std::to_string(in_part) + " of the " +
+                                               std::to_string(count) + " " + what);
+    }
+    if (part == Part::holes) {  // the holes header is required
+        throw ReadError::at_line(end_line, "truncated: no holes header");
+    }
+    if (part == Part::regions && count >= 0) {
+        throw ReadError::at_line(end_line, "truncated: the file ends after " +
+                                               std::to_string(in_part) + " of the " +
+                                               std::to_string(count) + " regions");
+    }
+    poly.points = std::move(vertices_file.points);
+    poly.index_base = vertices_file.index_base;
+    return poly;
+}
 
 ReadError ReadError::at_line(std::size_t line, const std::string& reason) {
     return ReadError("line " + std::to_string(line) + ": " + reason, line, 0, reason);

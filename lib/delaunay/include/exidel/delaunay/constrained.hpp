@@ -125,6 +125,16 @@ ConstrainedResult constrained_delaunay(std::span<const Point2> points,
                                        std::span<const Segment> segments, const K& kernel = K{},
                                        const ConstrainedOptions& options = {});
 
+/// How far from segment ab a vertex of its chain may lie when it is neither on the segment
+/// nor a rounded crossing of it: 2^-44 times the largest magnitude of the ends' coordinates
+/// (at least 256 ulps of it), and at least 2^-1066 (256 times the smallest subnormal). Such
+/// vertices come from cascades: a piece bent by a rounded crossing meets a vertex or another
+/// bent piece, each step off by at most half an ulp of the coordinates near the segment.
+inline double chain_tolerance(Point2 a, Point2 b) noexcept {
+    const double m = std::max({std::abs(a.x), std::abs(a.y), std::abs(b.x), std::abs(b.y)});
+    return std::max(std::ldexp(m, -44), std::ldexp(1.0, -1066));
+}
+
 /// Certifies `cdt` as the constrained Delaunay triangulation of `points` and `segments`
 /// (the input given to constrained_delaunay), with exact predicates:
 ///   - cdt.points starts with `points` (bit for bit); every added point is the correctly
@@ -139,17 +149,21 @@ ConstrainedResult constrained_delaunay(std::span<const Point2> points,
 ///     exactly the chains' pieces;
 ///   - every edge that is not a piece is locally Delaunay.
 /// Findings are certify()'s kinds, plus the constrained ones (FindingKind).
-/// How far from segment ab a vertex of its chain may lie when it is neither on the segment
-/// nor a rounded crossing of it: 2^-44 times the largest magnitude of the ends' coordinates
-/// (at least 256 ulps of it), and at least 2^-1066 (256 times the smallest subnormal). Such
-/// vertices come from cascades: a piece bent by a rounded crossing meets a vertex or another
-/// bent piece, each step off by at most half an ulp of the coordinates near the segment.
-inline double chain_tolerance(Point2 a, Point2 b) noexcept {
-    const double m = std::max({std::abs(a.x), std::abs(a.y), std::abs(b.x), std::abs(b.y)});
-    return std::max(std::ldexp(m, -44), std::ldexp(1.0, -1066));
-}
-
 namespace detail {
+/// The kernel the builder runs for K: K itself, but for the adaptive kernel its filters
+/// inlined (InlineConstrainedKernel, defined in src/constrained.cpp, where the library's
+/// floating-point flags hold; the same predicates, so the same output).
+struct InlineConstrainedKernel;
+template <PredicateKernel K>
+struct ConstrainedRunKernel {
+    using type = K;
+    static const K& from(const K& kernel) { return kernel; }
+};
+template <>
+struct ConstrainedRunKernel<AdaptiveKernel> {
+    using type = InlineConstrainedKernel;
+    static InlineConstrainedKernel from(const AdaptiveKernel&);
+};
 /// All points on one line: no triangles; each chain is the points from one end to the
 /// other in order along the line (src/constrained.cpp).
 void constrained_on_a_line(std::span<const Point2> points, std::span<const Segment> segments,
@@ -196,9 +210,11 @@ ConstrainedResult constrained_delaunay(std::span<const Point2> points,
     const std::size_t max_added =
         options.max_added_points == 0 ? room : std::min(room, options.max_added_points);
     try {
-        detail::ConstrainedBuilder<K> builder(kernel,
-                                              std::vector<Point2>(points.begin(), points.end()),
-                                              std::move(dt.triangulation), max_added);
+        using Run = detail::ConstrainedRunKernel<K>;
+        const auto& run_kernel = Run::from(kernel);
+        detail::ConstrainedBuilder<typename Run::type> builder(
+            run_kernel, std::vector<Point2>(points.begin(), points.end()),
+            std::move(dt.triangulation), max_added);
         builder.run(segments, out);
     } catch (const detail::ConstrainedStop& stop) {
         result.cdt = {};

@@ -1,0 +1,46 @@
+// exidel I/O: Triangle's .poly format (a planar straight-line graph: points, segments,
+// holes, regional attributes), read for the constrained triangulation.
+//
+//   vertices    "n [dim [attributes [markers]]]" then n lines "index x y [attribute...]
+//               [marker]", exactly as a .node file (points.hpp); dim must be 2. n = 0
+//               (vertices in a separate .node file) is an error: exidel reads one file.
+//   segments    "m [markers]" then m lines "index a b [marker]"; a and b are vertex
+//               numbers, counted like the vertices (from 0 or 1).
+//   holes       "h" then h lines "index x y": hole seeds (RegionOptions::holes).
+//   regions     optional: "r" then r lines "index x y attribute [maximum area]" (a
+//               negative or zero maximum area means none, as in Triangle).
+// Each section's indices start at 0 or 1 and follow consecutively. '#' starts a comment,
+// blank lines are skipped, numbers are decimal or C99 hexadecimal floats rounded to the
+// nearest double; NaN and infinity are errors. Attributes of vertices are checked and
+// dropped, markers kept for segments only. Errors are ReadError with the line number
+// (points.hpp); a file that ends inside a section says which.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "exidel/predicates/types.hpp"
+
+namespace exidel::io {
+
+struct PolyFile {
+    std::vector<Point2> points;
+    unsigned index_base = 0;  ///< the first vertex number of the file (0 or 1)
+    std::vector<std::array<std::uint32_t, 2>> segments;  ///< by point index, from 0
+    std::vector<std::int32_t> segment_markers;  ///< one per segment when the file has them
+    std::vector<Point2> holes;
+    struct Region {
+        Point2 seed;
+        double attribute = 0;
+        std::optional<double> max_area{};
+    };
+    std::vector<Region> regions;
+};
+
+/// Parses the whole of `data` (a .poly file's bytes). Throws ReadError on malformed input.
+PolyFile parse_poly(std::string_view data);
+
+}  // namespace exidel::io
