@@ -4,6 +4,7 @@
 // GeoJSON's members come in any order (a "type" may follow its "coordinates"), so a
 // feature cannot be decided while streaming through it. Numbers keep their text and are
 // converted when used, so that a property nobody asks for may hold any JSON number.
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -11,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "exidel/io/constraints.hpp"
 #include "exidel/io/number.hpp"
 #include "exidel/io/points.hpp"
 #include "geojson_points.hpp"
@@ -290,8 +292,11 @@ private:
 // Walks the tree into points (and z).
 class Reader {
 public:
-    Reader(const std::optional<std::string>& z_property, PointFile& out)
-        : z_property_(z_property), out_(out) {}
+    /// With `segments`, lines and polygons are read too (constraints mode): their
+    /// consecutive positions become points joined by segments.
+    Reader(const std::optional<std::string>& z_property, PointFile& out,
+           std::vector<std::array<std::uint32_t, 2>>* segments = nullptr)
+        : z_property_(z_property), out_(out), segments_(segments) {}
 
     void document(const Value& v) {
         const std::string type = type_of(v, "the GeoJSON text");
@@ -377,7 +382,18 @@ private:
             }
             return;
         }
+        if (segments_ && (type == "LineString" || type == "MultiLineString" || type == "Polygon" ||
+                          type == "MultiPolygon")) {
+            lines(g, type, name, z);
+            return;
+        }
         if (type != "Point" && type != "MultiPoint") {
+            if (segments_) {
+                throw ReadError::at_line(g.line, name + ": geometry type " + quoted(type) +
+                                                     " is not supported (Point, MultiPoint, "
+                                                     "LineString, MultiLineString, Polygon, "
+                                                     "MultiPolygon or GeometryCollection)");
+            }
             throw ReadError::at_line(g.line, name + ": geometry type " + quoted(type) +
                                                  " is not supported (Point, MultiPoint or "
                                                  "GeometryCollection of them)");
@@ -394,6 +410,85 @@ private:
                                                   "of positions");
         }
         for (const Value& p : c->items) position(p, name, z);
+    }
+
+    static const Value& array_of(const Value* v, const Value& owner, const std::string& what) {
+        if (!v) throw ReadError::at_line(owner.line, what + " needs \"coordinates\"");
+        if (v->kind != Value::Kind::array) {
+            throw ReadError::at_line(
+                v->line, what + " is " + std::string(kind_name(v->kind)) + ", not an array");
+        }
+        return *v;
+    }
+
+    // A LineString's positions joined in order; a ring's too, and closed.
+    void path(const Value& positions, const std::string& name, std::optional<double> z, bool ring) {
+        const std::size_t n = positions.items.size();
+        if (!ring && n < 2) {
+            throw ReadError::at_line(
+                positions.line,
+                name + ": a LineString needs at least 2 positions, got " + std::to_string(n));
+        }
+        if (ring && n < 4) {
+            throw ReadError::at_line(
+                positions.line,
+                name + ": a linear ring needs at least 4 positions, got " + std::to_string(n));
+        }
+        const auto first = static_cast<std::uint32_t>(out_.points.size());
+        for (std::size_t k = 0; k < n; ++k) {
+            position(positions.items[k], name, z);
+            if (k > 0)
+                segments_->push_back({first + static_cast<std::uint32_t>(k) - 1,
+                                      first + static_cast<std::uint32_t>(k)});
+        }
+        if (ring) {
+            // RFC 7946: the last position is the first again. It is dropped, and the last
+            // segment goes back to the first point.
+            const Point2 a = out_.points[first], b = out_.points.back();
+            if (a.x != b.x || a.y != b.y) {
+                throw ReadError::at_line(positions.items.back().line,
+                                         name + ": a linear ring must end where it starts");
+            }
+            out_.points.pop_back();
+            if (!out_.z.empty()) out_.z.pop_back();
+            segments_->back()[1] = first;
+        }
+    }
+
+    void lines(const Value& g, const std::string& type, const std::string& name,
+               std::optional<double> z) {
+        const Value& c = array_of(g.member("coordinates"), g, name + ": a " + type);
+        const auto polygon = [&](const Value& rings, const std::string& what) {
+            if (rings.kind != Value::Kind::array) {
+                throw ReadError::at_line(rings.line, what + ": a Polygon is an array of rings");
+            }
+            for (std::size_t r = 0; r < rings.items.size(); ++r) {
+                const Value& ring = rings.items[r];
+                if (ring.kind != Value::Kind::array) {
+                    throw ReadError::at_line(ring.line,
+                                             what + ": a linear ring is an array of positions");
+                }
+                path(ring, what + ", ring " + std::to_string(r), z, true);
+            }
+        };
+        if (type == "LineString") {
+            path(c, name, z, false);
+        } else if (type == "Polygon") {
+            polygon(c, name);
+        } else {
+            for (std::size_t k = 0; k < c.items.size(); ++k) {
+                const Value& part = c.items[k];
+                const std::string what = name + ", part " + std::to_string(k);
+                if (type == "MultiPolygon") {
+                    polygon(part, what);
+                } else if (part.kind != Value::Kind::array) {
+                    throw ReadError::at_line(part.line,
+                                             what + ": a LineString is an array of positions");
+                } else {
+                    path(part, what, z, false);
+                }
+            }
+        }
     }
 
     void position(const Value& p, const std::string& name, std::optional<double> z) {
@@ -429,6 +524,7 @@ private:
 
     const std::optional<std::string>& z_property_;
     PointFile& out_;
+    std::vector<std::array<std::uint32_t, 2>>* segments_;
     std::optional<bool> has_z_;
 };
 
@@ -450,3 +546,25 @@ PointFile parse_geojson_points(std::string_view data,
 }
 
 }  // namespace exidel::io::detail
+
+namespace exidel::io {
+
+ConstraintFile parse_geojson_constraints(std::string_view data) {
+    ConstraintFile file;
+    PointFile points;
+    std::size_t first = 0;
+    while (first < data.size() && (data[first] == ' ' || data[first] == '\t' ||
+                                   data[first] == '\r' || data[first] == '\n')) {
+        ++first;
+    }
+    if (first == data.size()) return file;  // empty input: nothing
+    detail::Parser parser(data);
+    const detail::Value document = parser.document();
+    const std::optional<std::string> no_z_property;
+    detail::Reader(no_z_property, points, &file.segments).document(document);
+    file.points = std::move(points.points);
+    file.z = std::move(points.z);
+    return file;
+}
+
+}  // namespace exidel::io

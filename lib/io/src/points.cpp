@@ -1,6 +1,6 @@
 // exidel I/O: the point readers and writers (formats: exidel/io/points.hpp).
 #include "exidel/io/points.hpp"
-#include "exidel/io/poly.hpp"
+#include "exidel/io/constraints.hpp"
 
 #include <fcntl.h>
 #include <sys/mman.h>
@@ -486,8 +486,8 @@ void require_finite(std::span<const Point2> points) {
 
 }  // namespace
 
-PolyFile parse_poly(std::string_view data) {
-    PolyFile poly;
+ConstraintFile parse_poly(std::string_view data) {
+    ConstraintFile poly;
     PointFile vertices_file;
     VertexSection vertices(vertices_file, data.size());
     enum class Part { vertices, segments, holes, regions, done } part = Part::vertices;
@@ -594,7 +594,7 @@ PolyFile parse_poly(std::string_view data) {
                                 std::to_string(fields.size()));
                     }
                     index_in(number, fields[0], "region");
-                    PolyFile::Region r;
+                    ConstraintFile::Region r;
                     r.seed = {coordinate(number, fields[1], "x"),
                               coordinate(number, fields[2], "y")};
                     r.attribute = coordinate(number, fields[3], "attribute");
