@@ -25,6 +25,8 @@
 #include "exidel/delaunay/mutable_triangulation.hpp"
 #include "exidel/predicates/all.hpp"
 
+#include "decode.hpp"
+
 namespace {
 
 using exidel::Point2;
@@ -44,17 +46,7 @@ struct Operation {
 std::vector<Operation> decode(const std::uint8_t* data, std::size_t size) {
     std::vector<Operation> ops;
     if (size == 0) return ops;
-    const unsigned mode = data[0] & 3u;
-    ++data;
-    --size;
-    int k = 0;
-    std::uint8_t nudge = 0;
-    if (mode >= 2 && size >= 2) {
-        k = mode == 2 ? int(data[0]) * 2200 / 255 - 1100 : 0;
-        nudge = data[1];
-        data += 2;
-        size -= 2;
-    }
+    const exidel::fuzz::Header h = exidel::fuzz::read_header(data, size);
     std::size_t i = 0;
     unsigned bit = 0;
     while (i < size) {
@@ -64,23 +56,15 @@ std::vector<Operation> decode(const std::uint8_t* data, std::size_t size) {
             continue;
         }
         Point2 p;
-        if (mode == 0) {
+        if (h.mode == 0) {
             if (i + 16 > size) break;
-            std::uint64_t x = 0, y = 0;
-            std::memcpy(&x, data + i, 8);
-            std::memcpy(&y, data + i + 8, 8);
-            p = {std::bit_cast<double>(x), std::bit_cast<double>(y)};
+            p = exidel::fuzz::raw_point(data + i);
             i += 16;
         } else {
             if (i + 2 > size) break;
-            p = {std::ldexp(double(std::int8_t(data[i])), k),
-                 std::ldexp(double(std::int8_t(data[i + 1])), k)};
+            p = exidel::fuzz::grid_point(h, data[i], data[i + 1], bit);
             i += 2;
-            if (mode == 3) {
-                p.x = std::nextafter(p.x, (nudge >> bit) & 1u ? INFINITY : -INFINITY);
-                p.y = std::nextafter(p.y, (nudge >> ((bit + 1) % 8)) & 1u ? INFINITY : -INFINITY);
-                bit = (bit + 1) % 8;
-            }
+            if (h.mode == 3) bit = (bit + 1) % 8;
         }
         ops.push_back({true, p, 0});
     }

@@ -516,6 +516,12 @@ ConstraintFile parse_poly(std::string_view data) {
                              VertexSection::max_count);
         in_part = 0;
     };
+    // After a section's last line (or a header announcing none), the next section's header.
+    const auto end_section = [&](Part next) {
+        if (static_cast<long long>(in_part) != count) return;
+        part = next;
+        count = -1;
+    };
     const std::size_t lines = for_each_line(data, [&](std::size_t number, std::string_view line) {
         split_fields(strip_comment(line), fields, error, false);  // no commas: cannot fail
         if (fields.empty()) return;
@@ -560,10 +566,7 @@ ConstraintFile parse_poly(std::string_view data) {
                     }
                     ++in_part;
                 }
-                if (static_cast<long long>(in_part) == count) {
-                    part = Part::holes;
-                    count = -1;
-                }
+                end_section(Part::holes);
                 return;
             case Part::holes:
                 if (count < 0) {
@@ -578,10 +581,7 @@ ConstraintFile parse_poly(std::string_view data) {
                         {coordinate(number, fields[1], "x"), coordinate(number, fields[2], "y")});
                     ++in_part;
                 }
-                if (static_cast<long long>(in_part) == count) {
-                    part = Part::regions;
-                    count = -1;
-                }
+                end_section(Part::regions);
                 return;
             case Part::regions:
                 if (count < 0) {
@@ -605,7 +605,7 @@ ConstraintFile parse_poly(std::string_view data) {
                     poly.regions.push_back(r);
                     ++in_part;
                 }
-                if (static_cast<long long>(in_part) == count) part = Part::done;
+                end_section(Part::done);
                 return;
             case Part::done: throw ReadError::at_line(number, "unexpected line after the regions");
         }
