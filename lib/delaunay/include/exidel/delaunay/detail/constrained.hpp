@@ -622,11 +622,11 @@ public:
         // (not an end of the crossing pieces) would bend that chain back to it, a loop:
         // among segments crossing within ulps of one another such splits go round in
         // circles. The pieces are then treated as a cascade.
+        Intersection i{};
         if (of_segments) {
-            const Intersection first =
-                intersection(pts_[lines[0]], pts_[lines[1]], pts_[lines[2]], pts_[lines[3]]);
-            if (first.ok()) {
-                const Located at = locate(first.point, e / 3, pts_.size());
+            i = intersection(pts_[lines[0]], pts_[lines[1]], pts_[lines[2]], pts_[lines[3]]);
+            if (i.ok()) {
+                const Located at = locate(i.point, e / 3, pts_.size());
                 if (at.where == Where::on_vertex) {
                     const std::uint32_t v = at.v;
                     const bool loops =
@@ -663,9 +663,10 @@ public:
                 return;
             }
         }
-        if (!of_segments) lines = {p.u, p.w, r, l};
-        Intersection i =
-            intersection(pts_[lines[0]], pts_[lines[1]], pts_[lines[2]], pts_[lines[3]]);
+        if (!of_segments) {  // the pieces' own crossing
+            lines = {p.u, p.w, r, l};
+            i = intersection(pts_[lines[0]], pts_[lines[1]], pts_[lines[2]], pts_[lines[3]]);
+        }
         // A crossing of the segments that rounds onto an end of one of the two pieces
         // splits the other there, and the pieces no longer meet. When the same pair does
         // that a second time at the same point, rounding has bent the pieces into a cycle
