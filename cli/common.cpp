@@ -14,7 +14,7 @@ namespace exidel::cli {
 const std::string_view point_input_help =
     R"(Input (-i FILE or FILE, or standard input when no file or '-' is given). The format
 is --input-format, else the file's extension (.json json, .node node, .f64 f64,
-.geojson geojson), else xy:
+.geojson geojson, .poly poly), else xy:
   xy    one point per line, "x y" or "x,y" (.txt .xy .csv); '#' starts a comment;
         the first line may be a header of names ("x,y"), which is skipped; fields
         may be quoted ("x","y"); a UTF-8 byte order mark is skipped. Wider CSV:
@@ -30,6 +30,8 @@ is --input-format, else the file's extension (.json json, .node node, .f64 f64,
         skipped, other geometry types are an error naming the feature; z is the
         positions' third coordinate (all or none), or with triangulate's
         --z-property NAME that property's value
+  poly  Triangle's .poly: its vertices (as .node); triangulate reads its segments,
+        holes and regions too (constrained mode)
 Text coordinates are decimal or C99 hex floats (0x1.8p-3; json: decimal only),
 )";
 
@@ -110,6 +112,27 @@ std::optional<io::PointFile> PointInput::read(unsigned threads, Progress& progre
     }
 }
 
+std::optional<io::ConstraintFile> PointInput::read_constraints(Progress& progress) const {
+    progress.phase(from_stdin() ? "reading standard input" : "reading '" + *path + "'");
+    try {
+        if (from_stdin()) {
+            std::string data;
+            char chunk[1 << 16];
+            while (std::cin.read(chunk, sizeof chunk) || std::cin.gcount() > 0) {
+                data.append(chunk, static_cast<std::size_t>(std::cin.gcount()));
+            }
+            if (std::cin.bad()) throw std::runtime_error("error while reading the input");
+            return io::parse_constraint_file(data, resolved_format());
+        }
+        const io::FileBytes bytes(*path);
+        return io::parse_constraint_file(bytes.view(), resolved_format());
+    } catch (const std::runtime_error& e) {  // io::ReadError included
+        progress.stop();
+        std::cerr << "exidel: " << e.what() << '\n';
+        return std::nullopt;
+    }
+}
+
 void PointCommand::add_input_output_options(CLI::App& app) {
     input.add_file_options(app);
     output_option_ = app.add_option("-o,--output", output);
@@ -171,6 +194,10 @@ std::string_view failure_meaning(delaunay::FailureKind kind) {
         case FailureKind::unknown_algorithm: return "no such algorithm";
         case FailureKind::result_inconsistent:
             return "the finished triangulation does not close up";
+        case FailureKind::invalid_segment: return "a segment names a point that does not exist";
+        case FailureKind::too_many_crossings:
+            return "the rounded crossings of nearly collinear segments did not settle; the run "
+                   "stopped rather than give an output it could not certify";
         default: return "the kernel's signs contradict each other";
     }
 }
@@ -186,6 +213,16 @@ void print_triangulation_failure(std::ostream& err, const Triangulated& t) {
             << "(adaptive, the default) triangulates every finite input.";
     }
     err << '\n';
+}
+
+void print_findings(std::ostream& err, const delaunay::Certificate& c) {
+    for (const delaunay::Finding& f : c.findings) {
+        err << "exidel: certificate: " << delaunay::to_string(f.kind) << ": " << f.message << '\n';
+    }
+    if (c.total_findings > c.findings.size()) {
+        err << "exidel: certificate: ... and " << c.total_findings - c.findings.size()
+            << " more findings\n";
+    }
 }
 
 PointRun::PointRun(const PointCommand& command, Clock::time_point start)

@@ -23,7 +23,9 @@
 #include <vector>
 
 #include "exidel/delaunay/algorithms.hpp"
+#include "exidel/delaunay/certify.hpp"
 #include "exidel/delaunay/result.hpp"
+#include "exidel/io/constraints.hpp"
 #include "exidel/io/points.hpp"
 #include "exidel/predicates/registry.hpp"
 #include "options.hpp"
@@ -82,6 +84,8 @@ struct PointInput {
     /// Reads every point (showing the phase on `progress`). When the input cannot be read
     /// or is malformed: "exidel: <why>" on standard error, progress stopped, nothing.
     std::optional<io::PointFile> read(unsigned threads, Progress& progress) const;
+    /// Reads points with segments and holes (poly, geojson or json input), as read() does.
+    std::optional<io::ConstraintFile> read_constraints(Progress& progress) const;
 
 private:
     const CLI::Option* input_option_ = nullptr;
@@ -155,6 +159,10 @@ Triangulated triangulate_points(const AnyKernel& kernel, std::span<const Point2>
 /// "exidel: triangulation failed: <where>: <what> (<kind>)." and, for an inexact kernel,
 /// that an exact one triangulates every finite input; one line on `err`.
 void print_triangulation_failure(std::ostream& err, const Triangulated& t);
+
+/// Prints the certifier's findings on `err`, one per line ("exidel: certificate: KIND:
+/// message"), and how many more there are.
+void print_findings(std::ostream& err, const delaunay::Certificate& c);
 
 /// The output format: `given`, else the one of -o's extension (`from_path`), else
 /// `fallback`. An extension `from_path` does not know is an error: nothing, and `error`

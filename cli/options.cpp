@@ -62,7 +62,7 @@ int CommandLine::usage_error(const std::string& message) const {
 }
 
 void add_point_format_option(CLI::App& app, std::optional<io::PointFormat>& target) {
-    add_parsed(app, "--input-format", "xy, json, node, f64 or geojson", target,
+    add_parsed(app, "--input-format", "xy, json, node, f64, geojson or poly", target,
                io::point_format_from_name);
 }
 

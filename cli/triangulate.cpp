@@ -22,6 +22,7 @@
 
 #include "commands.hpp"
 #include "common.hpp"
+#include "constrained.hpp"
 #include "exidel/delaunay/algorithms.hpp"
 #include "exidel/delaunay/certify.hpp"
 #include "exidel/io/points.hpp"
@@ -37,9 +38,10 @@ namespace {
 constexpr std::string_view triangulate_help_head =
     R"(usage: exidel triangulate [-i FILE] [-o FILE] [--kernel NAME] [--algorithm NAME]
                           [--incircle determinant|cosine]
-                          [--format json|ele|off|svg|geojson|wkt|ply|ply-ascii]
-                          [--input-format xy|json|node|f64|geojson] [--columns X,Y[,Z]]
-                          [--z-property NAME]
+                          [--format json|ele|off|svg|geojson|wkt|ply|ply-ascii|poly]
+                          [--input-format xy|json|node|f64|geojson|poly]
+                          [--columns X,Y[,Z]] [--z-property NAME]
+                          [--constraints] [--fill even-odd|non-zero|enclosed|all]
                           [--order auto|lexicographic|radial|strips] [--threads N]
                           [--strip-points N] [--strip-tiles N] [--certify] [--stats]
                           [--quiet] [FILE]
@@ -61,6 +63,27 @@ ones, so no point location is needed. Its order of insertion (--order):
 Every order gives a Delaunay triangulation with an exact kernel, and the same one when
 no four points are cocircular; the thread count never changes the output.
 
+Constraints (--constraints, or .poly input): the constrained Delaunay triangulation of
+the points with segments as edges: from a .poly (segments, hole seeds, regions), from
+GeoJSON (LineStrings are breaklines, Polygon rings are segments) or from json
+{"points": [[x, y], ...], "segments": [[i, j], ...], "holes": [[x, y], ...]}. A point
+exactly on a segment splits it; overlapping segments are merged; two segments that
+cross get a new vertex, each coordinate the double nearest to the exact crossing
+(numbered after the input points). Only the domain's triangles are written (--fill):
+  even-odd  inside an odd number of rings (default for geojson and json: polygons
+            with holes as rings)
+  non-zero  winding number of the segments, directed, not zero
+  enclosed  closed off from the outside by segments (default for .poly: Triangle's
+            -p; holes come from the hole seeds)
+  all       the whole convex hull
+Hole seeds then remove the region around each. Output (--format as below) holds
+every vertex (input, then added points): json {"triangles", "halfedges", "region",
+"constraints", "chain_offsets", "chain_vertices", "added_points", "crossings",
+"duplicates"}; geojson the triangles with their "region", then each segment's
+chain as a LineString; poly the vertices, the split segments (markers kept), holes
+and regions; ele with a .node of every vertex; svg with the segments in red.
+--certify checks the result with exidel's exact constrained certifier.
+
 )";
 
 constexpr std::string_view triangulate_help_tail =
@@ -68,7 +91,7 @@ constexpr std::string_view triangulate_help_tail =
 out of the triangulation and listed. An empty input is 0 points.
 
 Output (-o FILE, or standard output). The format is --format, else the extension of
--o (.json .ele .off .svg .geojson .wkt .ply; another extension is an error), else
+-o (.json .ele .off .svg .geojson .wkt .ply .poly; another extension is an error), else
 json. Indices are input indices, 0-based (ele: counted like the input .node, from 0
 or 1). Coordinates are written as the shortest decimals that read back as the same
 doubles. z (from --columns X,Y,Z or geojson input) goes into off, geojson, wkt and
@@ -97,6 +120,7 @@ handling).
   ply   binary little-endian PLY (ply-ascii: ASCII PLY): vertices double x, y, z
         (z = 0 without z; every input point, duplicates included), faces "list uchar
         int vertex_indices"
+  poly  Triangle's .poly: the points as vertices, the hull's edges as segments
 
 Options:
   -i, --input FILE        read points from FILE ('-' for standard input)
@@ -128,6 +152,9 @@ Options:
                           ("lon,lat,height")
       --z-property NAME   geojson input: z is the feature's property NAME (a
                           number) instead of the position's third coordinate
+      --constraints       read segments (and holes) too: see Constraints above
+      --fill RULE         which triangles of a constrained run are written: even-odd,
+                          non-zero, enclosed or all (see Constraints above)
       --certify           check the result with exact predicates before writing it
                           (exidel certify's checks); a finding is an error: exit
                           status 1, findings on standard error, no output written
@@ -167,6 +194,8 @@ struct Options : PointCommand {
     std::size_t strip_tiles = 0;
     std::optional<io::TriangulationFormat> format;
     bool certify = false;
+    bool constraints = false;
+    std::optional<delaunay::FillRule> fill;
 };
 
 std::string_view policy_name(delaunay::InCirclePolicy p) {
@@ -233,17 +262,6 @@ bool same_file(const std::string& a, const std::string& b) {
            sa.st_ino == sb.st_ino;
 }
 
-// Prints the certifier's findings on `err`, one per line.
-void print_findings(std::ostream& err, const delaunay::Certificate& c) {
-    for (const delaunay::Finding& f : c.findings) {
-        err << "exidel: certificate: " << delaunay::to_string(f.kind) << ": " << f.message << '\n';
-    }
-    if (c.total_findings > c.findings.size()) {
-        err << "exidel: certificate: ... and " << c.total_findings - c.findings.size()
-            << " more findings\n";
-    }
-}
-
 int run(const Options& o, const CommandLine& cli) {
     const Clock::time_point run_start = Clock::now();
     std::string error;
@@ -251,8 +269,23 @@ int run(const Options& o, const CommandLine& cli) {
     if (!kernel) return cli.usage_error(error);
     const std::optional<io::TriangulationFormat> format = output_format(
         o.format, o.output, io::TriangulationFormat::json, io::triangulation_format_from_path,
-        ".json .ele .off .svg .geojson .wkt .ply", error);
+        ".json .ele .off .svg .geojson .wkt .ply .poly", error);
     if (!format) return cli.usage_error(error);
+    // Constrained mode: asked for, or a .poly (Triangle's -p: a .poly is read for its segments).
+    const io::PointFormat input_format = o.input.resolved_format();
+    const bool constrained = o.constraints || input_format == io::PointFormat::poly;
+    if (constrained && input_format != io::PointFormat::poly &&
+        input_format != io::PointFormat::geojson && input_format != io::PointFormat::json) {
+        return cli.usage_error(
+            "--constraints reads segments from poly, geojson or json input, not " +
+            std::string(io::to_string(input_format)));
+    }
+    if (constrained && o.input.z_property) {
+        return cli.usage_error(
+            "--z-property does not apply with --constraints (z is the "
+            "positions' third coordinate)");
+    }
+    if (!constrained && o.fill) return cli.usage_error("--fill applies with --constraints only");
 
     // The output files exist (as temporaries) from here on, removed again on any failure.
     std::optional<PendingFile> output, node_output;
@@ -268,15 +301,8 @@ int run(const Options& o, const CommandLine& cli) {
         });
         if (!opened) return exit_failure;
     }
-    PointRun steps(o, run_start);
-    double certify_ms = 0;
-
-    const std::optional<io::PointFile> input = steps.read();
-    if (!input) return exit_failure;
-    const std::vector<Point2>& points = input->points;
-
-    // Triangulate: the only timed step. Counters only when asked for, so a plain run is
-    // the uninstrumented algorithm.
+    // The triangulation (with constraints: its start). Counters only when asked for, so a
+    // plain run is the uninstrumented algorithm.
     const delaunay::Options options = delaunay::Options{}
                                           .with_algorithm(o.algorithm)
                                           .with_incircle(o.incircle)
@@ -284,6 +310,18 @@ int run(const Options& o, const CommandLine& cli) {
                                           .with_threads(o.threads)
                                           .with_strip_points(o.strip_points)
                                           .with_strip_tiles(o.strip_tiles);
+    if (constrained) {
+        const ConstrainedSettings settings{o.fill, *format, options, o.certify};
+        return run_constrained(o, settings, *kernel, run_start, output, node_output);
+    }
+    PointRun steps(o, run_start);
+    double certify_ms = 0;
+
+    const std::optional<io::PointFile> input = steps.read();
+    if (!input) return exit_failure;
+    const std::vector<Point2>& points = input->points;
+
+    // Triangulate: the only timed step.
     const Triangulated triangulated = steps.triangulate(*kernel, points, options, o.stats);
     const delaunay::Result& result = triangulated.result;
     const auto finish = [&](int status) {
@@ -370,11 +408,13 @@ int triangulate_command(std::span<const std::string_view> args) {
                "a whole number from 1 to " + std::to_string(delaunay::detail::max_points),
                o.strip_tiles,
                [](const std::string& v) { return whole_number(v, delaunay::detail::max_points); });
-    add_parsed(app, "-f,--format", "json, ele, off, svg, geojson, wkt, ply or ply-ascii", o.format,
-               io::triangulation_format_from_name);
+    add_parsed(app, "-f,--format", "json, ele, off, svg, geojson, wkt, ply, ply-ascii or poly",
+               o.format, io::triangulation_format_from_name);
     o.input.add_format_options(app);
     o.input.add_z_property_option(app);
     app.add_flag("--certify", o.certify);
+    app.add_flag("--constraints", o.constraints);
+    add_parsed(app, "--fill", "even-odd, non-zero, enclosed or all", o.fill, fill_rule_from_name);
     o.add_report_options(app);
     if (const std::optional<int> status = o.parse(cli, args)) return *status;
     return run(o, cli);

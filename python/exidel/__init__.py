@@ -7,6 +7,7 @@
     tri = exidel.Delaunay(pts)                            # scipy.spatial.Delaunay's names
     exidel.certify(pts, tri).ok                           # True, decided exactly
     vor = exidel.Voronoi(pts)                             # correctly rounded vertices
+    cdt = exidel.ConstrainedDelaunay(pts, [[0, 1], [2, 3]])  # segments as edges; .certify()
 
 Submodules imported on demand: exidel.research (the studies of `exidel study`),
 exidel.plot (matplotlib), exidel.testing (Hypothesis strategies).
@@ -16,6 +17,7 @@ from ._core import (__version__, algorithms, build_info, compare_distance, incir
                     incircle_cosine, insphere, kernel_spellings, orient2d, orient3d)
 from ._core import location_kinds
 from ._delaunay import Certificate, Delaunay, Finding, Location, TriangulationError, certify
+from ._constrained import ConstrainedDelaunay
 from ._interpolate import (LinearNDInterpolator, NaturalNeighborInterpolator,
                            NearestNDInterpolator, griddata)
 from ._voronoi import ClippedVoronoi, Voronoi
@@ -23,7 +25,7 @@ from ._mutable import MutableTriangulation
 from ._core import circumcenter, circumcenter_statuses
 
 __all__ = ["__version__", "algorithms", "build_info", "kernel_spellings", "orient2d",
-           "incircle", "incircle_cosine", "compare_distance", "orient3d", "insphere", "Delaunay", "TriangulationError",
+           "incircle", "incircle_cosine", "compare_distance", "orient3d", "insphere", "Delaunay", "ConstrainedDelaunay", "TriangulationError",
            "certify", "Certificate", "Finding", "Location", "location_kinds", "LinearNDInterpolator",
            "NearestNDInterpolator", "NaturalNeighborInterpolator", "griddata", "MutableTriangulation", "Voronoi", "ClippedVoronoi", "circumcenter",
            "circumcenter_statuses"]

@@ -112,8 +112,10 @@ def _scale_rows(v):
 
 
 class TriangulationError(RuntimeError):
-    """An inexact kernel contradicted itself and the algorithm stopped (never raised with an
-    exact kernel). Carries the C++ library's typed failure:
+    """The algorithm stopped with a typed failure: an inexact kernel contradicted itself
+    (never with an exact kernel), or, for ConstrainedDelaunay, a segment names no point
+    ("invalid_segment") or rounded crossings did not settle ("too_many_crossings", with any
+    kernel). Carries the C++ library's typed failure:
 
     kind         the FailureKind name ("no_visible_edge", "erosion_inconsistent", ...)
     input_index  the input point being inserted, or None
@@ -681,7 +683,7 @@ class Certificate:
 
     def __repr__(self):
         if self.ok:
-            return "<exidel.Certificate: Delaunay>"
+            return "<exidel.Certificate: ok>"
         return (f"<exidel.Certificate: {self.total_findings} findings, first "
                 f"{self.findings[0]}>")
 

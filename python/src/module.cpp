@@ -12,6 +12,9 @@
 
 namespace exidel::python {
 
+// constrained.cpp: exidel._core.constrained_delaunay and certify_constrained.
+void bind_constrained(py::module_& m);
+
 Points to_points(const py::handle& object, const char* argument, int dimension) {
     Points p;
     try {
@@ -138,4 +141,5 @@ PYBIND11_MODULE(_core, m) {
     bind_voronoi(m);
     bind_locate(m);
     bind_mutable(m);
+    bind_constrained(m);
 }

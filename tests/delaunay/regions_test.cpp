@@ -107,6 +107,26 @@ TEST(Regions, SameOrientationRingsDifferBetweenTheRules) {
     EXPECT_EQ(*std::max_element(g.winding.begin(), g.winding.end()), 2);
 }
 
+TEST(Regions, EnclosedKeepsWhatTheSegmentsCloseOff) {
+    // Triangle's convention: an L-shaped outline with a material region (a closed ring, no
+    // hole seed) inside it and a lone point outside; the concavity and the outside go, the
+    // ring's inside stays. Even-odd would remove the ring's inside (depth 2).
+    const std::vector<Point2> l_shape{{0, 0}, {8, 0}, {8, 4}, {4, 4}, {4, 8}, {0, 8}};
+    Rings r;
+    r.ring(l_shape);
+    r.ring(inner_ccw);
+    r.points.push_back({12, 12});
+    const ConstrainedTriangulation cdt = triangulate(r);
+    RegionOptions o;
+    o.rule = FillRule::enclosed;
+    EXPECT_EQ(twice_inside_area(cdt, classify_regions(cdt, o)), twice_area(l_shape));
+    o.rule = FillRule::even_odd;
+    EXPECT_EQ(twice_inside_area(cdt, classify_regions(cdt, o)), twice_area(l_shape) - 2 * 4);
+    o.rule = FillRule::enclosed;
+    o.holes = {{2, 2}};
+    EXPECT_EQ(twice_inside_area(cdt, classify_regions(cdt, o)), twice_area(l_shape) - 2 * 4);
+}
+
 TEST(Regions, HoleSeedsRemoveTheirRegionOnly) {
     Rings r;
     r.ring(outer);

@@ -2,6 +2,9 @@
 // regions, and an error with its line for each way a file can be malformed or truncated.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -158,6 +161,59 @@ TEST(GeoJsonConstraints, MalformedGeometriesNameTheLine) {
                          "with z");
     expect_geojson_error("{\"type\": \"LineString\",\n\"coordinates\": [[0, 0], [1e999, 0]]}", 2,
                          "x:");
+}
+
+TEST(JsonConstraints, ObjectArrayAndKeysInAnyOrder) {
+    const ConstraintFile f = parse_json_constraints(
+        "{\"segments\": [[0, 1], [1, 2]],\n \"holes\": [[0.25, 0.25]],\n"
+        " \"points\": [[0, 0], [1, 0], [0, 1e-3]]}");
+    ASSERT_EQ(f.points.size(), 3u);
+    EXPECT_EQ(f.points[2].y, 1e-3);
+    ASSERT_EQ(f.segments.size(), 2u);
+    EXPECT_EQ(f.segments[1], (std::array<std::uint32_t, 2>{1, 2}));
+    ASSERT_EQ(f.holes.size(), 1u);
+    EXPECT_EQ(f.holes[0].x, 0.25);
+    // A bare array is points without segments; empty input is nothing.
+    EXPECT_EQ(parse_json_constraints("[[0, 0], [1, 1]]").points.size(), 2u);
+    EXPECT_TRUE(parse_json_constraints(" \n").points.empty());
+    EXPECT_TRUE(parse_json_constraints("{\"points\": []}").segments.empty());
+}
+
+TEST(JsonConstraints, MalformedInputNamesTheLine) {
+    const auto reason = [](const std::string& text) {
+        try {
+            parse_json_constraints(text);
+        } catch (const ReadError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_EQ(reason("{\"points\": [[0, 0]],\n \"segments\": [[0, 1]]}"),
+              "line 2: segment 0 names point 1, but there are 1 points");
+    EXPECT_EQ(reason("{\"points\": [], \"points\": []}"),
+              "line 1: the key \"points\" appears twice");
+    EXPECT_EQ(reason("{\"segments\": []}"), "line 1: the object has no \"points\"");
+    EXPECT_NE(reason("{\"points\": [],\n\"edges\": []}").find("line 2: unknown key \"edges\""),
+              std::string::npos);
+    EXPECT_NE(reason("{\"points\": [[0, 0]], \"segments\": [[0, 0, 0]]}").find("third index"),
+              std::string::npos);
+    EXPECT_NE(reason("{\"points\": [[0, 0]], \"segments\": [[-1, 0]]}").find("out of range"),
+              std::string::npos);
+    EXPECT_NE(reason("{\"points\": [[0, NaN]]}").find("not a finite number"), std::string::npos);
+    EXPECT_NE(reason("{\"points\": []} x").find("after the closing '}'"), std::string::npos);
+    EXPECT_NE(reason("{\"points\": [[0, 0]").find("line 1:"), std::string::npos);
+}
+
+TEST(JsonConstraints, EveryFormatWithSegmentsAndPolyAsPoints) {
+    const std::string poly = "3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n1 0\n0 0 1\n0\n";
+    EXPECT_EQ(parse_constraint_file(poly, PointFormat::poly).segments.size(), 1u);
+    EXPECT_EQ(parse_constraint_file("\xEF\xBB\xBF[[0, 0]]", PointFormat::json).points.size(), 1u);
+    EXPECT_THROW(parse_constraint_file("0 0\n", PointFormat::xy), std::invalid_argument);
+    EXPECT_EQ(point_format_from_path("a/b.poly"), PointFormat::poly);
+    EXPECT_EQ(point_format_from_name("poly"), PointFormat::poly);
+    const PointFile points = parse_point_file(poly, PointFormat::poly);
+    EXPECT_EQ(points.points.size(), 3u);
+    EXPECT_EQ(points.index_base, 0u);
 }
 
 }  // namespace

@@ -130,6 +130,7 @@ Regions classify_regions(const ConstrainedTriangulation& cdt, const RegionOption
         switch (options.rule) {
             case FillRule::even_odd: r.inside[t] = r.depth[t] % 2 == 1; break;
             case FillRule::non_zero: r.inside[t] = r.winding[t] != 0; break;
+            case FillRule::enclosed: r.inside[t] = r.depth[t] > 0; break;
             case FillRule::all: r.inside[t] = 1; break;
         }
     }

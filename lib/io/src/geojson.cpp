@@ -58,39 +58,51 @@ void wkt_position(NumberWriter& w, std::span<const Point2> points, std::span<con
 
 }  // namespace
 
+// The triangles of `tri` as Features, each on its own line after a ",\n" (the first after
+// "\n"), properties {"triangle": t, "vertices": [i, j, k]} and, when `region` is given,
+// "region": region[t]. Returns whether any was written.
+bool triangle_features(std::ostream& out, std::span<const Point2> points, const Triangulation& tri,
+                       std::span<const double> z, unsigned threads,
+                       std::span<const std::uint32_t> region) {
+    const std::size_t n = tri.triangle_count();
+    if (n == 0) return false;
+    // Each position formatted once ("[x, y]" or "[x, y, z]"), then copied into the
+    // features of the triangles around it.
+    const FormattedPoints positions(points.size(), threads, [&](std::size_t i, TextBuffer& b) {
+        b.append(96, [&](char* p) {
+            p = put_json(put(p, "["), points[i].x);
+            p = put_json(put(p, ", "), points[i].y);
+            if (!z.empty()) p = put_json(put(p, ", "), z[i]);
+            return put(p, "]");
+        });
+    });
+    write_items(out, n, threads, [&](std::size_t t, TextBuffer& b) {
+        const std::uint32_t* c = tri.triangles.data() + 3 * t;
+        const std::string_view p0 = positions[c[0]], p1 = positions[c[1]], p2 = positions[c[2]];
+        b.append(288 + 2 * p0.size() + p1.size() + p2.size(), [&](char* p) {
+            p = put(p, t ? ",\n" : "\n");
+            p = put(p, "{\"type\": \"Feature\", \"properties\": {\"triangle\": ");
+            p = put(p, static_cast<std::uint64_t>(t));
+            p = put(put(p, ", \"vertices\": ["), static_cast<std::uint64_t>(c[0]));
+            p = put(put(p, ", "), static_cast<std::uint64_t>(c[1]));
+            p = put(put(p, ", "), static_cast<std::uint64_t>(c[2]));
+            p = put(p, "]");
+            if (!region.empty()) p = put(put(p, ", \"region\": "), std::uint64_t{region[t]});
+            p = put(p, "}, \"geometry\": {\"type\": \"Polygon\", \"coordinates\": [[");
+            p = put(put(put(put(p, p0), ", "), p1), ", ");
+            p = put(put(put(put(p, p2), ", "), p0), "]]}}");
+            return p;
+        });
+    });
+    return true;
+}
+
 void write_triangulation_geojson(std::ostream& out, std::span<const Point2> points,
                                  const Triangulation& tri, std::span<const double> z,
                                  unsigned threads) {
-    const std::size_t n = tri.triangle_count();
     out << "{\"type\": \"FeatureCollection\", \"features\": [";
-    if (n > 0) {
-        // Each position formatted once ("[x, y]" or "[x, y, z]"), then copied into the
-        // features of the triangles around it.
-        const FormattedPoints positions(points.size(), threads, [&](std::size_t i, TextBuffer& b) {
-            b.append(96, [&](char* p) {
-                p = put_json(put(p, "["), points[i].x);
-                p = put_json(put(p, ", "), points[i].y);
-                if (!z.empty()) p = put_json(put(p, ", "), z[i]);
-                return put(p, "]");
-            });
-        });
-        write_items(out, n, threads, [&](std::size_t t, TextBuffer& b) {
-            const std::uint32_t* c = tri.triangles.data() + 3 * t;
-            const std::string_view p0 = positions[c[0]], p1 = positions[c[1]], p2 = positions[c[2]];
-            b.append(256 + 2 * p0.size() + p1.size() + p2.size(), [&](char* p) {
-                p = put(p, t ? ",\n" : "\n");
-                p = put(p, "{\"type\": \"Feature\", \"properties\": {\"triangle\": ");
-                p = put(p, static_cast<std::uint64_t>(t));
-                p = put(put(p, ", \"vertices\": ["), static_cast<std::uint64_t>(c[0]));
-                p = put(put(p, ", "), static_cast<std::uint64_t>(c[1]));
-                p = put(put(p, ", "), static_cast<std::uint64_t>(c[2]));
-                p = put(p, "]}, \"geometry\": {\"type\": \"Polygon\", \"coordinates\": [[");
-                p = put(put(put(put(p, p0), ", "), p1), ", ");
-                p = put(put(put(put(p, p2), ", "), p0), "]]}}");
-                return p;
-            });
-        });
-    }
+    const std::size_t n = tri.triangle_count();
+    triangle_features(out, points, tri, z, threads, {});
     NumberWriter w(out);
     const auto pos = [&](std::uint32_t v) { position(w, points, z, v); };
     // The hull: the boundary polygon, or for input without triangles the chain of its
@@ -118,6 +130,46 @@ void write_triangulation_geojson(std::ostream& out, std::span<const Point2> poin
         w.text("}}");
     }
     w.text(n || !hull.empty() ? "\n]}\n" : "]}\n");
+}
+
+void write_constrained_geojson(std::ostream& out, std::span<const Point2> points,
+                               const Triangulation& domain, std::span<const double> z,
+                               unsigned threads, std::span<const std::uint32_t> region,
+                               const delaunay::ConstrainedTriangulation& cdt,
+                               std::span<const std::int32_t> markers) {
+    out << "{\"type\": \"FeatureCollection\", \"features\": [";
+    bool any = triangle_features(out, points, domain, z, threads, region);
+    NumberWriter w(out);
+    const auto pos = [&](std::uint32_t v) { position(w, points, z, v); };
+    const std::size_t segments = cdt.chain_offsets.empty() ? 0 : cdt.chain_offsets.size() - 1;
+    for (std::size_t s = 0; s < segments; ++s) {
+        const std::span<const std::uint32_t> chain = cdt.chain(s);
+        w.text(any ? ",\n" : "\n")
+            .text("{\"type\": \"Feature\", \"properties\": {\"segment\": ")
+            .number(static_cast<std::uint64_t>(s))
+            .text(", \"vertices\": ");
+        index_array(w, chain);
+        if (!markers.empty()) {
+            w.text(", \"marker\": ");
+            const std::int32_t m = markers[s];
+            if (m < 0) w.text("-");
+            w.number(static_cast<std::uint64_t>(m < 0 ? -static_cast<std::int64_t>(m) : m));
+        }
+        if (chain.size() == 1) {
+            w.text("}, \"geometry\": {\"type\": \"Point\", \"coordinates\": ");
+            pos(chain[0]);
+        } else {
+            w.text("}, \"geometry\": {\"type\": \"LineString\", \"coordinates\": [");
+            for (std::size_t k = 0; k < chain.size(); ++k) {
+                w.text(k ? ", " : "");
+                pos(chain[k]);
+            }
+            w.text("]");
+        }
+        w.text("}}");
+        any = true;
+    }
+    w.text(any ? "\n]}\n" : "]}\n");
 }
 
 void write_triangulation_wkt(std::ostream& out, std::span<const Point2> points,

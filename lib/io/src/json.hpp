@@ -130,6 +130,12 @@ public:
         return s_.substr(start, i_++ - start);
     }
 
+    /// The line of the cursor (after skipping blanks), counted from 1.
+    std::size_t line() {
+        skip_space();
+        return line_;
+    }
+
     [[noreturn]] void fail(const std::string& reason) const {
         throw ReadError::at_line(line_, reason);
     }

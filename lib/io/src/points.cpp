@@ -654,13 +654,14 @@ std::string_view to_string(PointFormat f) noexcept {
         case PointFormat::node: return "node";
         case PointFormat::f64: return "f64";
         case PointFormat::geojson: return "geojson";
+        case PointFormat::poly: return "poly";
     }
     return "?";
 }
 
 std::optional<PointFormat> point_format_from_name(std::string_view name) {
     for (PointFormat f : {PointFormat::xy, PointFormat::json, PointFormat::node, PointFormat::f64,
-                          PointFormat::geojson}) {
+                          PointFormat::geojson, PointFormat::poly}) {
         if (to_string(f) == name) return f;
     }
     return std::nullopt;
@@ -671,6 +672,7 @@ PointFormat point_format_from_path(std::string_view path) {
     if (path.ends_with(".json")) return PointFormat::json;
     if (path.ends_with(".node")) return PointFormat::node;
     if (path.ends_with(".f64")) return PointFormat::f64;
+    if (path.ends_with(".poly")) return PointFormat::poly;
     return PointFormat::xy;  // .txt, .xy, .csv and anything else
 }
 
@@ -727,6 +729,10 @@ PointFile parse_point_file(std::string_view data, PointFormat format, const Read
         case PointFormat::node: return parse_node(data);
         case PointFormat::f64: return {parse_f64(data), 0, {}};
         case PointFormat::geojson: return detail::parse_geojson_points(data, options.z_property);
+        case PointFormat::poly: {
+            ConstraintFile poly = parse_poly(data);
+            return {std::move(poly.points), poly.index_base, {}};
+        }
     }
     return {};
 }

@@ -3,6 +3,7 @@
 #include "exidel/io/triangulation.hpp"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "exidel/delaunay/parallel.hpp"
+#include "exidel/io/constrained.hpp"
 #include "json.hpp"
 #include "text.hpp"
 #include "writers.hpp"
@@ -52,6 +54,43 @@ void write_json(std::ostream& out, const Triangulation& tri, unsigned threads) {
     json_array(out, tri.hull, threads);
     out << ",\n \"duplicates\": ";
     json_array(out, tri.duplicates, threads);
+    out << "}\n";
+}
+
+// write_constrained's json (exidel/io/constrained.hpp).
+void write_constrained_json(std::ostream& out, const delaunay::ConstrainedTriangulation& cdt,
+                            const Triangulation& domain, const std::vector<std::uint32_t>& region,
+                            unsigned threads) {
+    const auto flat = [](const auto& pairs) {
+        std::vector<std::uint32_t> v;
+        v.reserve(2 * pairs.size());
+        for (const auto& p : pairs) v.insert(v.end(), {p[0], p[1]});
+        return v;
+    };
+    out << "{\"triangles\": ";
+    json_array(out, domain.triangles, threads);
+    out << ",\n \"halfedges\": ";
+    json_array(out, domain.halfedges, threads);
+    out << ",\n \"region\": ";
+    json_array(out, region, threads);
+    out << ",\n \"constraints\": ";
+    json_array(out, flat(cdt.constraints), threads);
+    out << ",\n \"chain_offsets\": ";
+    json_array(out, cdt.chain_offsets, threads);
+    out << ",\n \"chain_vertices\": ";
+    json_array(out, cdt.chain_vertices, threads);
+    out << ",\n \"added_points\": [";
+    const std::span<const Point2> added(cdt.points.data() + cdt.input_count, cdt.added_count());
+    detail::write_items(out, added.size(), threads, [&](std::size_t i, detail::TextBuffer& b) {
+        b.append(64, [&](char* p) {
+            p = detail::put_json(detail::put(p, i ? ", [" : "["), added[i].x);
+            return detail::put(detail::put_json(detail::put(p, ", "), added[i].y), "]");
+        });
+    });
+    out << "],\n \"crossings\": ";
+    json_array(out, flat(cdt.crossings), threads);
+    out << ",\n \"duplicates\": ";
+    json_array(out, cdt.triangulation.duplicates, threads);
     out << "}\n";
 }
 
@@ -173,20 +212,24 @@ void draw_edges(NumberWriter& w, std::size_t vertex_count, const Triangulation& 
     if (open) w.text(detail::svg_path_end);
 }
 
-void write_svg(std::ostream& out, std::span<const Point2> points, const Triangulation& tri) {
+// With `pieces` (a constrained triangulation's domain: no hull), the triangles are filled
+// one by one (the domain need not be convex) and the pieces drawn where the hull would be.
+void write_svg(std::ostream& out, std::span<const Point2> points, const Triangulation& tri,
+               std::span<const std::array<std::uint32_t, 2>> pieces = {},
+               bool constrained = false) {
     NumberWriter w(out);
     const auto xy = [&](const char* command, std::uint32_t v) {
         w.text(command).number(points[v].x).text(" ").number(points[v].y);
     };
     const detail::SvgBox box = bounds(points);
     detail::svg_header(w, box);
-    w.text("<!-- exidel triangulation: ")
+    w.text(constrained ? "<!-- exidel constrained triangulation: " : "<!-- exidel triangulation: ")
         .number(static_cast<std::uint64_t>(points.size()))
         .text(" points, ")
         .number(static_cast<std::uint64_t>(tri.triangle_count()))
         .text(" triangles, ")
-        .number(static_cast<std::uint64_t>(tri.hull.size()))
-        .text(" hull vertices -->\n");
+        .number(static_cast<std::uint64_t>(constrained ? pieces.size() : tri.hull.size()))
+        .text(constrained ? " constraint pieces -->\n" : " hull vertices -->\n");
     // Each group's style is set once; its paths carry only their data. Stroke widths are
     // screen pixels in data units (svg_stroke_width).
     if (tri.triangle_count() > 0) {
@@ -197,6 +240,15 @@ void write_svg(std::ostream& out, std::span<const Point2> points, const Triangul
         // The fill: the hull (convex) as a fan of pieces from its first vertex, each of at
         // most svg_path_items vertices.
         w.text("<g fill=\"#dde6f3\" stroke=\"none\">\n");
+        for (std::size_t t = 0; constrained && t < tri.triangle_count(); ++t) {
+            xy(t % svg_path_items ? " M" : "<path d=\"M", tri.triangles[3 * t]);
+            xy(" L", tri.triangles[3 * t + 1]);
+            xy(" L", tri.triangles[3 * t + 2]);
+            w.text(" Z");
+            if (t % svg_path_items == svg_path_items - 1 || t + 1 == tri.triangle_count()) {
+                w.text(detail::svg_path_end);
+            }
+        }
         const std::size_t h = tri.hull.size();
         for (std::size_t k = 1; k + 1 < h; k += svg_path_items - 2) {
             xy("<path d=\"M", tri.hull[0]);
@@ -230,6 +282,18 @@ void write_svg(std::ostream& out, std::span<const Point2> points, const Triangul
         }
         w.text(one_cycle ? " Z" : "").text(detail::svg_path_end).text("</g>\n");
     }
+    if (!pieces.empty()) {
+        w.text("<g fill=\"none\" stroke=\"#c0392b\" ");
+        detail::svg_stroke_width(w, box, 2).text(" stroke-linecap=\"round\">\n");
+        for (std::size_t k = 0; k < pieces.size(); ++k) {
+            xy(k % svg_path_items ? " M" : "<path d=\"M", pieces[k][0]);
+            xy(" L", pieces[k][1]);
+            if (k % svg_path_items == svg_path_items - 1 || k + 1 == pieces.size()) {
+                w.text(detail::svg_path_end);
+            }
+        }
+        w.text("</g>\n");
+    }
     const double r = detail::svg_dot_radius(points.size());
     // The points as dots: zero-length subpaths with round caps of diameter 2r, in paths of
     // svg_path_items points. Not one <circle> each: librsvg refuses a file of more than
@@ -261,6 +325,7 @@ std::string_view to_string(TriangulationFormat f) noexcept {
         case TriangulationFormat::wkt: return "wkt";
         case TriangulationFormat::ply: return "ply";
         case TriangulationFormat::ply_ascii: return "ply-ascii";
+        case TriangulationFormat::poly: return "poly";
     }
     return "?";
 }
@@ -269,7 +334,7 @@ std::optional<TriangulationFormat> triangulation_format_from_name(std::string_vi
     for (TriangulationFormat f :
          {TriangulationFormat::json, TriangulationFormat::ele, TriangulationFormat::off,
           TriangulationFormat::svg, TriangulationFormat::geojson, TriangulationFormat::wkt,
-          TriangulationFormat::ply, TriangulationFormat::ply_ascii}) {
+          TriangulationFormat::ply, TriangulationFormat::ply_ascii, TriangulationFormat::poly}) {
         if (to_string(f) == name) return f;
     }
     return std::nullopt;
@@ -303,6 +368,80 @@ void write_triangulation(std::ostream& out, std::span<const Point2> points,
             return detail::write_triangulation_ply(out, points, tri, z, true);
         case TriangulationFormat::ply_ascii:
             return detail::write_triangulation_ply(out, points, tri, z, false);
+        case TriangulationFormat::poly: {
+            // The hull's edges as segments (for collinear input, the chain of its points).
+            std::vector<std::array<std::uint32_t, 2>> hull_edges;
+            const std::size_t h = tri.hull.size();
+            const std::size_t edges = tri.collinear ? (h > 0 ? h - 1 : 0) : h;
+            for (std::size_t k = 0; k < edges; ++k) {
+                hull_edges.push_back({tri.hull[k], tri.hull[(k + 1) % h]});
+            }
+            return detail::write_poly(out, points, hull_edges, {}, {}, {}, options.index_base,
+                                      options.threads);
+        }
+    }
+}
+
+void write_constrained(std::ostream& out, const delaunay::ConstrainedTriangulation& cdt,
+                       const delaunay::Regions& regions, TriangulationFormat format,
+                       const ConstrainedWriteOptions& options) {
+    const std::span<const Point2> points(cdt.points);
+    const std::size_t segments = cdt.chain_offsets.empty() ? 0 : cdt.chain_offsets.size() - 1;
+    if (!options.z.empty() && options.z.size() != points.size()) {
+        throw std::invalid_argument("write_constrained: " + std::to_string(options.z.size()) +
+                                    " z values for " + std::to_string(points.size()) + " vertices");
+    }
+    if (!options.segment_markers.empty() && options.segment_markers.size() != segments) {
+        throw std::invalid_argument(
+            "write_constrained: " + std::to_string(options.segment_markers.size()) +
+            " markers for " + std::to_string(segments) + " segments");
+    }
+    const Triangulation domain = domain_triangulation(cdt, regions);
+    std::vector<std::uint32_t> region;
+    region.reserve(domain.triangle_count());
+    for (std::size_t t = 0; t < regions.inside.size(); ++t) {
+        if (regions.inside[t]) region.push_back(regions.region[t]);
+    }
+    switch (format) {
+        case TriangulationFormat::json:
+            return write_constrained_json(out, cdt, domain, region, options.threads);
+        case TriangulationFormat::svg: return write_svg(out, points, domain, cdt.constraints, true);
+        case TriangulationFormat::geojson:
+            return detail::write_constrained_geojson(out, points, domain, options.z,
+                                                     options.threads, region, cdt,
+                                                     options.segment_markers);
+        case TriangulationFormat::poly: {
+            // Each piece once, with the marker of the first segment whose chain holds it.
+            std::vector<std::int32_t> markers;
+            if (!options.segment_markers.empty()) {
+                markers.assign(cdt.constraints.size(), 0);
+                std::vector<std::uint8_t> marked(cdt.constraints.size(), 0);
+                for (std::size_t s = 0; s < segments; ++s) {
+                    const std::span<const std::uint32_t> chain = cdt.chain(s);
+                    for (std::size_t k = 0; k + 1 < chain.size(); ++k) {
+                        const std::array<std::uint32_t, 2> piece{std::min(chain[k], chain[k + 1]),
+                                                                 std::max(chain[k], chain[k + 1])};
+                        const auto at =
+                            std::lower_bound(cdt.constraints.begin(), cdt.constraints.end(), piece);
+                        const auto i = static_cast<std::size_t>(at - cdt.constraints.begin());
+                        if (at != cdt.constraints.end() && *at == piece && !marked[i]) {
+                            marked[i] = 1;
+                            markers[i] = options.segment_markers[s];
+                        }
+                    }
+                }
+            }
+            return detail::write_poly(out, points, cdt.constraints, markers, options.holes,
+                                      options.regions, options.index_base, options.threads);
+        }
+        case TriangulationFormat::ele:
+        case TriangulationFormat::off:
+        case TriangulationFormat::wkt:
+        case TriangulationFormat::ply:
+        case TriangulationFormat::ply_ascii:
+            return write_triangulation(
+                out, points, domain, format,
+                WriteOptions{options.index_base, options.threads, options.z});
     }
 }
 

@@ -2,11 +2,15 @@
 // and write_voronoi (formats: exidel/io/triangulation.hpp, exidel/io/voronoi.hpp).
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <iosfwd>
 #include <span>
 
+#include "exidel/delaunay/constrained.hpp"
 #include "exidel/delaunay/result.hpp"
 #include "exidel/delaunay/voronoi.hpp"
+#include "exidel/io/constraints.hpp"
 #include "exidel/predicates/types.hpp"
 
 namespace exidel::io::detail {
@@ -22,6 +26,23 @@ void write_triangulation_wkt(std::ostream& out, std::span<const Point2> points,
 void write_triangulation_ply(std::ostream& out, std::span<const Point2> points,
                              const delaunay::Triangulation& tri, std::span<const double> z,
                              bool binary);
+
+/// The triangles of `domain` (over `points`, all vertices of `cdt`), each with its
+/// "region" when `region` is given, then one Feature per input segment of `cdt`: its chain
+/// as a LineString (a Point for a segment whose ends are equal), properties {"segment": s,
+/// "vertices": [chain], "marker": m (when `markers` is given)}.
+void write_constrained_geojson(std::ostream& out, std::span<const Point2> points,
+                               const delaunay::Triangulation& domain, std::span<const double> z,
+                               unsigned threads, std::span<const std::uint32_t> region,
+                               const delaunay::ConstrainedTriangulation& cdt,
+                               std::span<const std::int32_t> markers);
+
+/// Triangle's .poly: `points` as vertices (numbered from `base`, no attributes or
+/// markers), `segments` (with `markers` when not empty), `holes`, `regions`.
+void write_poly(std::ostream& out, std::span<const Point2> points,
+                std::span<const std::array<std::uint32_t, 2>> segments,
+                std::span<const std::int32_t> markers, std::span<const Point2> holes,
+                std::span<const ConstraintFile::Region> regions, unsigned base, unsigned threads);
 
 void write_voronoi_geojson(std::ostream& out, const delaunay::ClippedVoronoi& d,
                            const delaunay::Box& box);

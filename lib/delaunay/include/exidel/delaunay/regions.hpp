@@ -32,7 +32,10 @@ namespace exidel::delaunay {
 enum class FillRule : std::uint8_t {
     even_odd,  ///< inside where a walk from outside crosses an odd number of pieces
     non_zero,  ///< inside where the winding number of the chains is not zero
-    all,       ///< every triangle (only hole seeds remove triangles)
+    /// inside where every walk from outside crosses a piece (depth > 0): Triangle's -p,
+    /// which removes the triangles reachable from the hull without crossing a segment
+    enclosed,
+    all,  ///< every triangle (only hole seeds remove triangles)
 };
 
 struct RegionOptions {

@@ -1,5 +1,5 @@
 // exidel I/O: points and segments for the constrained triangulation, from Triangle's .poly
-// format (parse_poly) or GeoJSON (parse_geojson_constraints).
+// format (parse_poly), GeoJSON (parse_geojson_constraints) or JSON (parse_json_constraints).
 //
 // .poly, a planar straight-line graph: points, segments, holes, regional attributes.
 //   vertices    "n [dim [attributes [markers]]]" then n lines "index x y [attribute...]
@@ -27,6 +27,11 @@
 // [x, y, z] (ConstraintFile::z). A feature whose geometry is null is skipped; strict JSON,
 // errors are ReadError with their line. Points repeated between features (shared borders)
 // are kept as given: the triangulation merges equal points.
+//
+// JSON: an object {"points": [[x, y], ...], "segments": [[a, b], ...], "holes": [[x, y],
+// ...]}, the keys in any order, "segments" and "holes" optional, nothing else; a and b are
+// point indices from 0. A bare array of points (the json point format, points.hpp) is
+// points without segments. Numbers as in the json point format; errors with their line.
 #pragma once
 
 #include <array>
@@ -35,6 +40,7 @@
 #include <string_view>
 #include <vector>
 
+#include "exidel/io/points.hpp"
 #include "exidel/predicates/types.hpp"
 
 namespace exidel::io {
@@ -60,5 +66,10 @@ ConstraintFile parse_poly(std::string_view data);
 /// Parses the whole of `data` as GeoJSON points, lines and polygons (above). Empty input (or
 /// only whitespace) is an empty file. Throws ReadError on malformed input.
 ConstraintFile parse_geojson_constraints(std::string_view data);
+/// Parses the whole of `data` as the JSON object above. Throws ReadError on malformed input.
+ConstraintFile parse_json_constraints(std::string_view data);
+/// The reader of `format`: poly, geojson or json (a UTF-8 byte order mark skipped). Throws
+/// std::invalid_argument for the formats that have no segments (xy, node, f64).
+ConstraintFile parse_constraint_file(std::string_view data, PointFormat format);
 
 }  // namespace exidel::io

@@ -33,6 +33,9 @@
 //         each feature, which must be a number (missing or not a number: an error naming
 //         the feature). Strict JSON (RFC 8259): malformed text is a ReadError with its
 //         line; unknown members (bbox, crs, id, other properties) are ignored.
+//   poly  (.poly) Triangle's planar straight-line graph (exidel/io/constraints.hpp): its
+//         vertices, numbered like a .node; the segments, holes and regions are checked
+//         and, as points, dropped (parse_constraint_file keeps them).
 //
 // Coordinates in the text formats are decimal or C99 hexadecimal floats (json: decimal
 // only), rounded to the nearest double (exidel/io/number.hpp). Every format rejects NaN
@@ -54,13 +57,13 @@
 
 namespace exidel::io {
 
-enum class PointFormat { xy, json, node, f64, geojson };
+enum class PointFormat { xy, json, node, f64, geojson, poly };
 
 std::string_view to_string(PointFormat f) noexcept;
-/// "xy", "json", "node", "f64", "geojson"; nullopt for anything else.
+/// "xy", "json", "node", "f64", "geojson", "poly"; nullopt for anything else.
 std::optional<PointFormat> point_format_from_name(std::string_view name);
-/// From the extension of `path` (case-sensitive: .txt .xy .csv .json .node .f64 .geojson);
-/// xy when the extension is none of these.
+/// From the extension of `path` (case-sensitive: .txt .xy .csv .json .node .f64 .geojson
+/// .poly); xy when the extension is none of these.
 PointFormat point_format_from_path(std::string_view path);
 
 /// Malformed input. what() is "line N: reason" (text formats) or "byte offset N: reason"

@@ -55,6 +55,10 @@
 //         input point in input order (duplicates included, so face indices are input
 //         indices), then "element face" with "property list uchar int vertex_indices",
 //         one face of three per triangle, counter-clockwise.
+//   poly  Triangle's .poly: every input point as a vertex (as a .node, numbered from
+//         WriteOptions::index_base), the hull's edges as segments (for collinear input the
+//         chain of its distinct points), no holes and no regions: what Triangle writes for
+//         a triangulation of points (exidel/io/constrained.hpp for constraints).
 //
 // Coordinates in json-like and text formats (off, geojson, wkt, ply-ascii) are the
 // shortest decimals that read back as the same doubles (std::to_chars), never rounded.
@@ -73,14 +77,14 @@
 
 namespace exidel::io {
 
-enum class TriangulationFormat { json, ele, off, svg, geojson, wkt, ply, ply_ascii };
+enum class TriangulationFormat { json, ele, off, svg, geojson, wkt, ply, ply_ascii, poly };
 
 std::string_view to_string(TriangulationFormat f) noexcept;
-/// "json", "ele", "off", "svg", "geojson", "wkt", "ply", "ply-ascii"; nullopt for anything
-/// else.
+/// "json", "ele", "off", "svg", "geojson", "wkt", "ply", "ply-ascii", "poly"; nullopt for
+/// anything else.
 std::optional<TriangulationFormat> triangulation_format_from_name(std::string_view name);
-/// From the extension of `path` (.json .ele .off .svg .geojson .wkt .ply, the last binary
-/// PLY); nullopt for any other.
+/// From the extension of `path` (.json .ele .off .svg .geojson .wkt .ply .poly, .ply being
+/// binary PLY); nullopt for any other.
 std::optional<TriangulationFormat> triangulation_format_from_path(std::string_view path);
 
 struct WriteOptions {
