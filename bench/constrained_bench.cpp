@@ -2,7 +2,7 @@
 // Constrained_Delaunay_triangulation_2, in one process, repetitions interleaved, medians.
 //
 //   exidel-bench-constrained [--input cells|polygon|crossing] [--n N] [--segments S]
-//                            [--reps R]
+//                            [--reps R] [--peer cgal|none]  (none: exidel alone, to profile)
 //
 // cells: N points uniform in the unit square and S non-crossing segments: the square is cut
 // into S cells and each segment joins two random points of its own cell (so segments never
@@ -128,6 +128,7 @@ int main(int argc, char** argv) {
     std::string input = "cells";
     std::size_t n = 1'000'000, s = 100'000;
     int reps = 5;
+    bool peer = true;  // --peer none: exidel alone (profiling)
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string a = argv[i];
         if (a == "--input")
@@ -138,6 +139,8 @@ int main(int argc, char** argv) {
             s = std::strtoull(argv[i + 1], nullptr, 10);
         else if (a == "--reps")
             reps = std::atoi(argv[i + 1]);
+        else if (a == "--peer")
+            peer = std::string(argv[i + 1]) != "none";
         else {
             std::fprintf(stderr, "unknown option %s\n", argv[i]);
             return 2;
@@ -155,6 +158,7 @@ int main(int argc, char** argv) {
                                            std::span<const Segment>(in.segments), AdaptiveKernel{});
         auto t1 = Clock::now();
         ours.push_back(ms(t0, t1));
+        if (!peer) continue;
         t0 = Clock::now();
         cgal_counts = crossing ? cgal_run<CGAL::Epeck, CGAL::Exact_intersections_tag>(in)
                                : cgal_run<CGAL::Epick, CGAL::Exact_predicates_tag>(in);
@@ -175,6 +179,7 @@ int main(int argc, char** argv) {
     std::printf("exidel  %10.1f ms  vertices %zu  constraint pieces %zu  added %zu  certified %s\n",
                 median(ours), vertices, result.cdt.constraints.size(), result.cdt.added_count(),
                 c.ok() ? "yes" : "NO");
+    if (!peer) return c.ok() ? 0 : 1;
     std::printf("CGAL %s %10.1f ms  vertices %zu  constrained edges %zu\n",
                 crossing ? "(Epeck, exact intersections)" : "(Epick, exact predicates)",
                 median(theirs), cgal_counts.first, cgal_counts.second);

@@ -77,7 +77,7 @@ public:
     std::int32_t twin(std::int32_t e) const noexcept { return twin_[static_cast<std::size_t>(e)]; }
     std::int32_t seg(std::int32_t e) const noexcept { return seg_[static_cast<std::size_t>(e)]; }
     const Point2& pt(std::uint32_t v) const noexcept { return pts_[v]; }
-    Sign orient(std::uint32_t a, std::uint32_t b, std::uint32_t c) const {
+    [[gnu::always_inline]] Sign orient(std::uint32_t a, std::uint32_t b, std::uint32_t c) const {
         return k_.orient2d(pts_[a], pts_[b], pts_[c]);
     }
 
@@ -221,8 +221,15 @@ public:
             if (f < 0 || seg(e) != none) continue;
             const std::uint32_t a = from(e), b = to(e), c = from(prv(e)), d = from(prv(f));
             if (k_.incircle(pts_[a], pts_[b], pts_[c], pts_[d]) != Sign::positive) continue;
-            if (orient(c, d, b) != Sign::positive || orient(c, d, a) != Sign::negative)
-                stop(FailureKind::flips_exceeded, a, "a flip's quadrilateral is not convex");
+            // With exact signs the quadrilateral is strictly convex: d lies strictly inside
+            // the circle through a, b, c and strictly on the other side of ab, so the open
+            // segment cd lies inside the disk (c on its circle, d inside) and crosses line
+            // ab inside the disk, that is strictly between a and b. An inexact kernel's signs
+            // may contradict that, and a flip then would fold the mesh: checked.
+            if constexpr (!K::is_exact) {
+                if (orient(c, d, b) != Sign::positive || orient(c, d, a) != Sign::negative)
+                    stop(FailureKind::flips_exceeded, a, "a flip's quadrilateral is not convex");
+            }
             if (budget-- == 0) stop(FailureKind::flips_exceeded, a, "too many flips");
             const std::int32_t t1 = e / 3, t2 = f / 3;
             flip(e);
@@ -467,9 +474,33 @@ public:
     };
     Exit find_exit(std::uint32_t u, std::uint32_t w) {
         Exit exit;
+        // w a neighbour of u (an edge already: no orientation needed).
+        for_fan(u, [&](std::int32_t h) {
+            if (to(h) == w) {
+                exit.edge = h;
+            } else if (from(prv(h)) == w) {
+                exit.edge = prv(h);
+            }
+            return exit.edge != none;
+        });
+        if (exit.edge != none) {
+            exit.x = w;
+            return exit;
+        }
+        // Consecutive triangles of the fan share a vertex: its side of u -> w is asked
+        // once (the last answer is kept).
+        std::uint32_t last = end_of_chain;
+        Sign last_side = Sign::zero;
+        const auto side = [&](std::uint32_t x) {
+            if (x != last) {
+                last = x;
+                last_side = orient(u, w, x);
+            }
+            return last_side;
+        };
         for_fan(u, [&](std::int32_t h) {
             const std::uint32_t p = to(h), q = from(prv(h));
-            const Sign op = orient(u, w, p), oq = orient(u, w, q);
+            const Sign op = side(p), oq = side(q);
             if (op == Sign::zero && same_direction(u, p, w)) {
                 exit.edge = h;
                 exit.x = p;
@@ -749,45 +780,82 @@ public:
     /// round flips, and the list empties. Unlike removing the crossed triangles and filling
     /// the two sides, this needs no care for a vertex whose every triangle the segment
     /// crosses (it hangs inside one side, joined to the rest by one edge).
+    ///
+    /// The edges waiting (crossing ones, and the new diagonals that no longer cross, for
+    /// Lawson's flips after) are held by half-edge, kept current through the flips: a flip
+    /// rewrites only its two triangles, so only the four sides of its quadrilateral move
+    /// to other slots, and the slot map entry_of_ (slot -> waiting entry) says which
+    /// entries to update. No edge is searched for in a fan but the finished piece.
     void insert_by_flips(std::uint32_t u, std::uint32_t v, std::int32_t piece) {
-        std::vector<std::array<std::uint32_t, 2>>& list = crossing_edges_;
+        std::vector<std::int32_t>& waiting = waiting_;  // entry -> its half-edge
+        std::vector<std::uint32_t>& list = crossing_entries_;
+        std::vector<std::uint32_t>& fresh = fresh_entries_;
+        waiting.clear();
         list.clear();
-        for (const std::int32_t e : crossed_) list.push_back({from(e), to(e)});
-        std::vector<std::array<std::uint32_t, 2>>& fresh = fresh_edges_;
         fresh.clear();
+        if (entry_of_.size() < tri_.size()) entry_of_.resize(tri_.size(), none);
+        const auto hold = [&](std::int32_t h) {
+            const auto entry = static_cast<std::uint32_t>(waiting.size());
+            waiting.push_back(h);
+            entry_of_[static_cast<std::size_t>(h)] = static_cast<std::int32_t>(entry);
+            return entry;
+        };
+        for (const std::int32_t e : crossed_) list.push_back(hold(e));
         const std::size_t k = list.size();
         std::size_t budget = 8 * (k + 1) * (k + 1) + 64;
         for (std::size_t head = 0; head < list.size(); ++head) {
             if (budget-- == 0)
                 stop(FailureKind::constraint_inconsistent, u,
                      "flipping the edges a segment crosses does not end");
-            const auto [a, b] = list[head];
-            const std::int32_t e = find_edge(a, b);
+            const std::uint32_t entry = list[head];
+            const std::int32_t e = waiting[entry];
             if (e < 0 || twin(e) < 0)
                 stop(FailureKind::constraint_inconsistent, u,
                      "an edge a segment crosses has vanished");
             const std::uint32_t c = from(prv(e)), d = from(prv(twin(e)));
-            const std::uint32_t p = from(e), q = to(e);  // e may run b -> a
+            const std::uint32_t p = from(e), q = to(e);
             if (orient(c, d, q) != Sign::positive || orient(c, d, p) != Sign::negative) {
-                list.push_back({a, b});  // not convex: later
+                list.push_back(entry);  // not convex: later
                 continue;
             }
+            // The sides of the quadrilateral (e's triangle's, then its twin's), where the
+            // flip puts each: (p, q, c), (q, p, d) become (c, p, d), (d, q, c).
+            const std::int32_t f = twin(e);
+            const std::int32_t t1 = e / 3, t2 = f / 3;
+            const std::array<std::int32_t, 4> before{nxt(e), prv(e), nxt(f), prv(f)};
+            const std::array<std::int32_t, 4> after{3 * t2 + 1, 3 * t1, 3 * t1 + 1, 3 * t2};
+            std::array<std::int32_t, 4> moved{};
+            for (int i = 0; i < 4; ++i) {
+                moved[i] = entry_of_[static_cast<std::size_t>(before[i])];
+                entry_of_[static_cast<std::size_t>(before[i])] = none;
+            }
+            entry_of_[static_cast<std::size_t>(e)] = none;
+            entry_of_[static_cast<std::size_t>(f)] = none;
             flip(e);
+            for (int i = 0; i < 4; ++i) {
+                if (moved[i] < 0) continue;
+                waiting[static_cast<std::size_t>(moved[i])] = after[i];
+                entry_of_[static_cast<std::size_t>(after[i])] = moved[i];
+            }
+            // The new diagonal c -> d is half-edge 3 t2 + 2 (d -> c is 3 t1 + 2); it takes
+            // over e's entry.
+            const std::int32_t diagonal = 3 * t1 + 2;
+            waiting[entry] = diagonal;
+            entry_of_[static_cast<std::size_t>(diagonal)] = static_cast<std::int32_t>(entry);
             const int side_c = to_int(orient(u, v, c)), side_d = to_int(orient(u, v, d));
-            (side_c * side_d < 0 ? list : fresh).push_back({c, d});
+            (side_c * side_d < 0 ? list : fresh).push_back(entry);
         }
+        for (const std::int32_t h : waiting)
+            if (h >= 0) entry_of_[static_cast<std::size_t>(h)] = none;
         const std::int32_t h = find_edge(u, v);
         if (h < 0)
             stop(FailureKind::constraint_inconsistent, u, "flips did not make a segment an edge");
         seg_[static_cast<std::size_t>(h)] = piece;
         if (twin(h) >= 0) seg_[static_cast<std::size_t>(twin(h))] = piece;
-        // The new edges, found again (flips move edges between slots), then Lawson.
+        // The new edges that no longer cross, then Lawson.
         std::vector<std::int32_t>& queue = stack_;
         queue.clear();
-        for (const auto& [c, d] : fresh) {
-            const std::int32_t e = find_edge(c, d);
-            if (e >= 0) queue.push_back(e);
-        }
+        for (const std::uint32_t entry : fresh) queue.push_back(waiting[entry]);
         flip_queue(queue);
     }
     // ---- the result ------------------------------------------------------------------------
@@ -838,9 +906,7 @@ public:
             }
             out.chain_offsets.push_back(static_cast<std::uint32_t>(out.chain_vertices.size()));
         }
-        std::sort(pieces.begin(), pieces.end());
-        pieces.erase(std::unique(pieces.begin(), pieces.end()), pieces.end());
-        out.constraints = std::move(pieces);
+        out.constraints = sorted_pieces(pieces);
         out.crossings = std::move(crossings_);
         out.crossing_lines = std::move(crossing_lines_);
         // The boundary cycle from its lexicographically smallest vertex.
@@ -868,6 +934,29 @@ public:
         t.duplicates = std::move(duplicates_);
         t.collinear = false;
         out.points = std::move(pts_);
+    }
+    /// `pieces` (u < v each) sorted and without repeats, in linear time: counted by u, then
+    /// each vertex's few sorted in place (a comparison sort of 10^6 pieces cost about a
+    /// tenth of a polygon's whole insertion).
+    std::vector<std::array<std::uint32_t, 2>> sorted_pieces(
+        const std::vector<std::array<std::uint32_t, 2>>& pieces) const {
+        std::vector<std::uint32_t> start(pts_.size() + 1, 0);
+        for (const auto& piece : pieces) ++start[piece[0] + 1];
+        for (std::size_t v = 0; v < pts_.size(); ++v) start[v + 1] += start[v];
+        std::vector<std::array<std::uint32_t, 2>> sorted(pieces.size());
+        {
+            std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+            for (const auto& piece : pieces) sorted[fill[piece[0]]++] = piece;
+        }
+        std::size_t kept = 0;
+        for (std::size_t v = 0; v < pts_.size(); ++v) {
+            const auto first = sorted.begin() + start[v], last = sorted.begin() + start[v + 1];
+            std::sort(first, last);
+            for (auto it = first; it != last; ++it)
+                if (it == first || (*it)[1] != (*(it - 1))[1]) sorted[kept++] = *it;
+        }
+        sorted.resize(kept);
+        return sorted;
     }
     /// Where rounding has bent pieces back across each other, a chain can pass a vertex
     /// twice; the loop between the two visits is cut out (the chain keeps its first visit
@@ -966,7 +1055,8 @@ private:
     // Scratch, reused.
     std::vector<Piece> pending_, restores_;
     std::vector<std::int32_t> stack_, crossed_;
-    std::vector<std::array<std::uint32_t, 2>> crossing_edges_, fresh_edges_;
+    std::vector<std::int32_t> waiting_, entry_of_;
+    std::vector<std::uint32_t> crossing_entries_, fresh_entries_;
 };
 
 }  // namespace detail
