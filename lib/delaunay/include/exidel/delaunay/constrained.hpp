@@ -213,7 +213,8 @@ ConstrainedResult constrained_delaunay(std::span<const Point2> points,
         using Run = detail::ConstrainedRunKernel<K>;
         const auto& run_kernel = Run::from(kernel);
         detail::ConstrainedBuilder<typename Run::type> builder(
-            run_kernel, points, std::move(dt.triangulation), max_added);
+            run_kernel, std::vector<Point2>(points.begin(), points.end()),
+            std::move(dt.triangulation), max_added);
         builder.run(segments, out);
     } catch (const detail::ConstrainedStop& stop) {
         result.cdt = {};

@@ -51,56 +51,19 @@ class ConstrainedBuilder {
 public:
     static constexpr std::int32_t none = -1;
 
-    /// The builder numbers the vertices in the order they first appear in tri's triangles
-    /// (input_of_: internal -> input index, rank_: input -> internal), then the points
-    /// that are not vertices: the triangles are laid out along the algorithm's spatial
-    /// sweep, so a vertex's fan and its neighbours' coordinates are near one another in
-    /// memory, which input order (random, or along a polygon whose sides cross the mesh)
-    /// is not. Every index leaving the builder (the result, a failure's vertex) is mapped
-    /// back; every choice made by vertex index uses input indices (input_index), so the
-    /// output is what input numbering gives.
-    ConstrainedBuilder(const K& kernel, std::span<const Point2> points, Triangulation tri,
+    ConstrainedBuilder(const K& kernel, std::vector<Point2> points, Triangulation tri,
                        std::size_t max_added)
         : k_(kernel),
+          pts_(std::move(points)),
           tri_(std::move(tri.triangles)),
           twin_(std::move(tri.halfedges)),
-          input_vertex_of_(std::move(tri.vertex_of_input)),
+          vertex_of_(std::move(tri.vertex_of_input)),
           duplicates_(std::move(tri.duplicates)),
-          input_count_(points.size()),
-          max_added_(max_added),
-          original_(points) {
-        const std::size_t n = points.size();
-        constexpr std::uint32_t unset = std::numeric_limits<std::uint32_t>::max();
-        rank_.assign(n, unset);
-        input_of_.resize(n);
-        std::uint32_t next = 0;
-        for (std::uint32_t& v : tri_) {
-            if (rank_[v] == unset) {
-                rank_[v] = next;
-                input_of_[next++] = v;
-            }
-            v = rank_[v];
-        }
-        for (std::uint32_t i = 0; i < n; ++i) {
-            if (rank_[i] == unset) {
-                rank_[i] = next;
-                input_of_[next++] = i;
-            }
-        }
-        pts_.resize(n);
-        vertex_of_.resize(n);
-        for (std::size_t j = 0; j < n; ++j) {
-            pts_[j] = points[input_of_[j]];
-            vertex_of_[j] = rank_[input_vertex_of_[input_of_[j]]];
-        }
+          input_count_(pts_.size()),
+          max_added_(max_added) {
         seg_.assign(tri_.size(), none);
         out_.assign(pts_.size(), none);
         for (std::size_t e = 0; e < tri_.size(); ++e) out_[tri_[e]] = static_cast<std::int32_t>(e);
-    }
-
-    /// The index of internal vertex v in the result (an added point keeps its own).
-    std::uint32_t input_index(std::uint32_t v) const noexcept {
-        return v < input_count_ ? input_of_[v] : v;
     }
 
     std::size_t added() const noexcept { return pts_.size() - input_count_; }
@@ -223,9 +186,8 @@ public:
             if (k_.incircle(pts_[a], pts_[b], pts_[c], pts_[d]) != Sign::positive) continue;
             // A strictly convex quadrilateral is needed; an exact kernel guarantees it.
             if (orient(c, d, b) != Sign::positive || orient(c, d, a) != Sign::negative)
-                stop(FailureKind::flips_exceeded, input_index(x),
-                     "a flip's quadrilateral is not convex");
-            if (budget-- == 0) stop(FailureKind::flips_exceeded, input_index(x), "too many flips");
+                stop(FailureKind::flips_exceeded, x, "a flip's quadrilateral is not convex");
+            if (budget-- == 0) stop(FailureKind::flips_exceeded, x, "too many flips");
             const auto [p, q] = flip(e);
             stack.push_back(p);
             stack.push_back(q);
@@ -266,10 +228,9 @@ public:
             // may contradict that, and a flip then would fold the mesh: checked.
             if constexpr (!K::is_exact) {
                 if (orient(c, d, b) != Sign::positive || orient(c, d, a) != Sign::negative)
-                    stop(FailureKind::flips_exceeded, input_index(a),
-                         "a flip's quadrilateral is not convex");
+                    stop(FailureKind::flips_exceeded, a, "a flip's quadrilateral is not convex");
             }
-            if (budget-- == 0) stop(FailureKind::flips_exceeded, input_index(a), "too many flips");
+            if (budget-- == 0) stop(FailureKind::flips_exceeded, a, "too many flips");
             const std::int32_t t1 = e / 3, t2 = f / 3;
             flip(e);
             for (const std::int32_t h : {3 * t1, 3 * t1 + 1, 3 * t2, 3 * t2 + 1})
@@ -347,8 +308,7 @@ public:
             if (g == start) return;  // around an interior vertex
             h = g;
             if (budget-- == 0)
-                stop(FailureKind::constraint_inconsistent, input_index(v),
-                     "a vertex's fan does not close");
+                stop(FailureKind::constraint_inconsistent, v, "a vertex's fan does not close");
         }
         h = start;
         for (;;) {
@@ -357,8 +317,7 @@ public:
             h = nxt(g);
             if (f(h)) return;
             if (budget-- == 0)
-                stop(FailureKind::constraint_inconsistent, input_index(v),
-                     "a vertex's fan does not close");
+                stop(FailureKind::constraint_inconsistent, v, "a vertex's fan does not close");
         }
     }
 
@@ -367,16 +326,14 @@ public:
         std::int32_t h = nxt(e);
         for (std::size_t budget = tri_.size() / 3 + 1; twin(h) >= 0; h = nxt(twin(h)))
             if (budget-- == 0)
-                stop(FailureKind::constraint_inconsistent, input_index(from(h)),
-                     "the boundary does not close");
+                stop(FailureKind::constraint_inconsistent, from(h), "the boundary does not close");
         return h;
     }
     std::int32_t prev_boundary(std::int32_t e) const {
         std::int32_t h = prv(e);
         for (std::size_t budget = tri_.size() / 3 + 1; twin(h) >= 0; h = prv(twin(h)))
             if (budget-- == 0)
-                stop(FailureKind::constraint_inconsistent, input_index(from(h)),
-                     "the boundary does not close");
+                stop(FailureKind::constraint_inconsistent, from(h), "the boundary does not close");
         return h;
     }
 
@@ -440,16 +397,14 @@ public:
              h != e && orient(from(h), to(h), x) == Sign::negative; h = prev_boundary(h)) {
             chain.insert(chain.begin(), h);
             if (chain.size() > cap)
-                stop(FailureKind::constraint_inconsistent, input_index(x),
-                     "a point sees the whole boundary");
+                stop(FailureKind::constraint_inconsistent, x, "a point sees the whole boundary");
         }
         for (std::int32_t h = next_boundary(e);
              h != chain.front() && orient(from(h), to(h), x) == Sign::negative;
              h = next_boundary(h)) {
             chain.push_back(h);
             if (chain.size() > cap)
-                stop(FailureKind::constraint_inconsistent, input_index(x),
-                     "a point sees the whole boundary");
+                stop(FailureKind::constraint_inconsistent, x, "a point sees the whole boundary");
         }
         // Triangle (v_i, v_(i-1), x) on boundary half-edge v_(i-1) -> v_i.
         std::int32_t previous = none;
@@ -563,7 +518,7 @@ public:
             return false;
         });
         if (exit.edge == none && exit.crossed == none)
-            stop(FailureKind::constraint_inconsistent, input_index(u),
+            stop(FailureKind::constraint_inconsistent, u,
                  "no triangle around a segment's vertex lies towards its other end");
         return exit;
     }
@@ -609,8 +564,7 @@ public:
         std::vector<std::int32_t>& crossed = crossed_;
         for (std::size_t hops = 0; u != w; ++hops) {
             if (hops > pts_.size())
-                stop(FailureKind::constraint_inconsistent, input_index(u),
-                     "a segment's vertices repeat");
+                stop(FailureKind::constraint_inconsistent, u, "a segment's vertices repeat");
             const Exit exit = find_exit(u, w);
             if (exit.edge != none) {  // along an existing edge, to x (w or a vertex before it)
                 add_piece(exit.edge, s, node);
@@ -646,12 +600,11 @@ public:
                 }
                 crossed.push_back(e);
                 if (crossed.size() > tri_.size() / 3 + 1)
-                    stop(FailureKind::constraint_inconsistent, input_index(u),
+                    stop(FailureKind::constraint_inconsistent, u,
                          "a segment crosses every triangle");
                 const std::int32_t f = twin(e);
                 if (f < 0)
-                    stop(FailureKind::constraint_inconsistent, input_index(u),
-                         "a segment leaves the hull");
+                    stop(FailureKind::constraint_inconsistent, u, "a segment leaves the hull");
                 const std::uint32_t v = from(prv(f));
                 if (v == w) {
                     end = v;
@@ -725,8 +678,7 @@ public:
         if (!of_segments) {
             // (By index, not by side: the choice must not depend on orientation, so that a
             // mirrored input gives the mirrored output.)
-            const bool r_first = input_index(r) < input_index(l);
-            for (const std::uint32_t v : {r_first ? r : l, r_first ? l : r}) {
+            for (const std::uint32_t v : {std::min(r, l), std::max(r, l)}) {
                 if (!near_segment(p.s, v) || on_chain(p.s, v)) continue;
                 split_piece({p.s, p.node, none}, v, pending_);
                 return;
@@ -776,7 +728,7 @@ public:
 
     std::uint32_t end_vertex(std::uint32_t s, int which) const {
         const Segment& g = (*segments_)[s];
-        return vertex_of_[rank_[which == 0 ? g.a : g.b]];
+        return vertex_of_[which == 0 ? g.a : g.b];
     }
     /// Vertex v lies exactly on the line of segment s / on the open segment s.
     bool on_line(std::uint32_t s, std::uint32_t v) const {
@@ -851,11 +803,8 @@ public:
         // Every vertex the flips meet is an end of a crossed edge, whose side of u -> v the
         // walk decided (each crossed edge runs from right to left): kept, not asked again.
         if (side_.size() < pts_.size()) side_.resize(pts_.size(), 0);
-        if (++side_stamp_ == 0) {  // the stamps wrapped: start afresh
-            std::fill(side_.begin(), side_.end(), 0);
-            side_stamp_ = 1;
-        }
-        const std::uint64_t right = std::uint64_t{side_stamp_} << 1, left = right | 1;
+        ++side_stamp_;
+        const std::uint64_t right = side_stamp_ << 1, left = right | 1;
         for (const std::int32_t e : crossed_) {
             list.push_back(hold(e));
             side_[from(e)] = right;
@@ -865,18 +814,18 @@ public:
             const std::uint64_t mark = side_[x];
             if (mark == left) return 1;
             if (mark == right) return -1;
-            return to_int(orient(u, v, x));  // not met by the walk (not reached)
+            return to_int(orient(u, v, x));  // u or v themselves: zero
         };
         const std::size_t k = list.size();
         std::size_t budget = 8 * (k + 1) * (k + 1) + 64;
         for (std::size_t head = 0; head < list.size(); ++head) {
             if (budget-- == 0)
-                stop(FailureKind::constraint_inconsistent, input_index(u),
+                stop(FailureKind::constraint_inconsistent, u,
                      "flipping the edges a segment crosses does not end");
             const std::uint32_t entry = list[head];
             const std::int32_t e = waiting[entry];
             if (e < 0 || twin(e) < 0)
-                stop(FailureKind::constraint_inconsistent, input_index(u),
+                stop(FailureKind::constraint_inconsistent, u,
                      "an edge a segment crosses has vanished");
             const std::uint32_t c = from(prv(e)), d = from(prv(twin(e)));
             const std::uint32_t p = from(e), q = to(e);
@@ -915,8 +864,7 @@ public:
             if (h >= 0) entry_of_[static_cast<std::size_t>(h)] = none;
         const std::int32_t h = find_edge(u, v);
         if (h < 0)
-            stop(FailureKind::constraint_inconsistent, input_index(u),
-                 "flips did not make a segment an edge");
+            stop(FailureKind::constraint_inconsistent, u, "flips did not make a segment an edge");
         seg_[static_cast<std::size_t>(h)] = piece;
         if (twin(h) >= 0) seg_[static_cast<std::size_t>(twin(h))] = piece;
         // The new edges that no longer cross, then Lawson.
@@ -940,8 +888,7 @@ public:
         if (natural_cap_) max_added_ = pairs + 2 * m + 64;
         head_.assign(segments.size(), end_of_chain);
         for (std::size_t s = 0; s < segments.size(); ++s) {
-            const std::uint32_t a = end_vertex(static_cast<std::uint32_t>(s), 0),
-                                b = end_vertex(static_cast<std::uint32_t>(s), 1);
+            const std::uint32_t a = vertex_of_[segments[s].a], b = vertex_of_[segments[s].b];
             if (a != b) insert_segment(a, b, static_cast<std::uint32_t>(s));
         }
         if (events_ > 0) {
@@ -950,7 +897,6 @@ public:
             mark_pieces();
             flip_everything();
         }
-        // The result, in input numbering (input_index).
         out.input_count = input_count_;
         // The chains, in the order of their nodes.
         out.chain_offsets.assign(1, 0);
@@ -958,17 +904,16 @@ public:
         std::vector<std::array<std::uint32_t, 2>> pieces;
         for (std::size_t s = 0; s < segments.size(); ++s) {
             if (head_[s] == end_of_chain) {
-                out.chain_vertices.push_back(
-                    input_index(end_vertex(static_cast<std::uint32_t>(s), 0)));
+                out.chain_vertices.push_back(vertex_of_[segments[s].a]);
             } else {
                 std::size_t count = 0;
                 for (std::uint32_t n = head_[s]; n != end_of_chain; n = nodes_[n].next) {
                     if (++count > nodes_.size())
                         stop(FailureKind::constraint_inconsistent, s,
                              "a segment's chain does not end");
-                    const std::uint32_t v = input_index(nodes_[n].vertex);
+                    const std::uint32_t v = nodes_[n].vertex;
                     if (nodes_[n].next != end_of_chain) {
-                        const std::uint32_t w = input_index(after(n));
+                        const std::uint32_t w = after(n);
                         pieces.push_back({std::min(v, w), std::max(v, w)});
                     }
                     out.chain_vertices.push_back(v);
@@ -979,8 +924,6 @@ public:
         out.constraints = sorted_pieces(pieces);
         out.crossings = std::move(crossings_);
         out.crossing_lines = std::move(crossing_lines_);
-        for (auto& line : out.crossing_lines)
-            for (std::uint32_t& v : line) v = input_index(v);
         // The boundary cycle from its lexicographically smallest vertex.
         Triangulation& t = out.triangulation;
         std::int32_t first = none;
@@ -993,24 +936,18 @@ public:
         if (first >= 0) {
             std::int32_t h = first;
             do {
-                t.hull.push_back(input_index(from(h)));
+                t.hull.push_back(from(h));
                 if (t.hull.size() > twin_.size())
-                    stop(FailureKind::constraint_inconsistent, input_index(from(h)),
+                    stop(FailureKind::constraint_inconsistent, from(h),
                          "the boundary does not close");
                 h = next_boundary(h);
             } while (h != first);
         }
-        for (std::uint32_t& v : tri_) v = input_index(v);
         t.triangles = std::move(tri_);
         t.halfedges = std::move(twin_);
-        // Each input point's vertex as triangulate() gave it; each added point its own.
-        t.vertex_of_input = std::move(input_vertex_of_);
-        for (std::size_t j = input_count_; j < pts_.size(); ++j)
-            t.vertex_of_input.push_back(static_cast<std::uint32_t>(j));
+        t.vertex_of_input = std::move(vertex_of_);
         t.duplicates = std::move(duplicates_);
         t.collinear = false;
-        // The input points in input order, then the added ones.
-        for (std::size_t j = 0; j < input_count_; ++j) pts_[j] = original_[j];
         out.points = std::move(pts_);
     }
     /// `pieces` (u < v each) sorted and without repeats, in linear time: counted by u, then
@@ -1110,14 +1047,10 @@ private:
     std::vector<Point2> pts_;
     std::vector<std::uint32_t> tri_;
     std::vector<std::int32_t> twin_;
-    std::vector<std::uint32_t> input_vertex_of_;  ///< triangulate()'s, by input index
-    std::vector<std::uint32_t> vertex_of_;        ///< by internal index, internal vertices
+    std::vector<std::uint32_t> vertex_of_;
     std::vector<std::uint32_t> duplicates_;
     std::size_t input_count_;
     std::size_t max_added_;
-    std::span<const Point2> original_;     ///< the input points, input order
-    std::vector<std::uint32_t> rank_;      ///< input index -> internal
-    std::vector<std::uint32_t> input_of_;  ///< internal index -> input
     std::vector<std::int32_t> seg_;
     std::vector<std::int32_t> out_;
     std::vector<std::array<std::uint32_t, 2>> crossings_;
@@ -1138,8 +1071,8 @@ private:
     std::vector<Piece> pending_, restores_;
     std::vector<std::int32_t> stack_, crossed_;
     std::vector<std::int32_t> waiting_, entry_of_;
-    std::vector<std::uint64_t> side_;  ///< per vertex: 2 stamp + 1 left, 2 stamp right
-    std::uint32_t side_stamp_ = 0;
+    std::vector<std::uint64_t> side_;  ///< per vertex: 2 stamp + 1 left of it, 2 stamp right
+    std::uint64_t side_stamp_ = 0;     ///< one per piece inserted by flips (never wraps)
     std::vector<std::uint32_t> crossing_entries_, fresh_entries_;
 };
 
