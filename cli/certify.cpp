@@ -13,6 +13,8 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "constrained.hpp"
+#include "constrained_certify.hpp"
 #include "exidel/delaunay/certify.hpp"
 #include "exidel/io/points.hpp"
 #include "exidel/io/triangulation_input.hpp"
@@ -26,6 +28,10 @@ constexpr std::string_view certify_help =
     R"(usage: exidel certify POINTS TRIANGULATION [--input-format xy|json|node|f64]
                       [--columns X,Y] [--format json|ele|off|simplices] [--all]
                       [--json] [--strict] [--quiet]
+       exidel certify --constraints CONSTRAINTS TRIANGULATION
+                      [--input-format poly|geojson|json] [--format json|ele|off]
+                      [--fill even-odd|non-zero|enclosed|all|any]
+                      [--tolerate-crossings] [--all] [--json] [--strict] [--quiet]
 
 Checks, with exact predicates, whether TRIANGULATION is the Delaunay triangulation of
 the points in POINTS, and says what is wrong and where when it is not. The checks, in
@@ -67,11 +73,47 @@ With --json, one JSON object instead: {"certified", "points", "distinct",
 "triangle", "points", "index", "other"}, ...]} with every finding ("triangle" -1 when
 a finding concerns none; "index" and "other" as in the C++ Finding).
 
+With --constraints: whether TRIANGULATION is the constrained Delaunay triangulation of
+the points and segments of CONSTRAINTS (the input of exidel triangulate --constraints or
+Triangle's -p: .poly, .geojson, .json), or the domain of it such a run writes.
+TRIANGULATION is exidel's constrained json (its vertices: the input points, then
+"added_points"; its chains and crossings as written), an .ele with the .node beside it
+(same stem; every vertex, the input's first, then the added points: Triangle's -p
+output or exidel's -o X.ele), or an OFF of every vertex (an input point recognised by
+its exact coordinates, the others added points). A peer's chains are derived: segment
+(a, b) runs through the input points exactly on it and the added points within
+chain_tolerance of it, in order along it; an added point is the crossing of the first
+two segments through it. The file's triangles are completed to the convex hull with
+the constrained Delaunay triangulation of the same vertices and pieces outside the
+domain, and the whole is certified exactly (every triangle counter-clockwise, one
+convex boundary winding once, every vertex used, Euler's count, every chain's pieces
+edges, every non-piece edge locally Delaunay, every added point the correctly rounded
+crossing of its segments); then the file's triangles must be exactly the domain that
+--fill (default as for triangulate: enclosed for .poly, even-odd otherwise) and the
+hole seeds define, or with --fill any be bounded by pieces and the hull. Findings in
+triangles numbered from the file's count on concern the completion.
+exidel's added points are the correctly rounded crossings (each coordinate the double
+nearest to the exact crossing): a peer that computes crossings otherwise gets
+added_point_wrong findings, or with --tolerate-crossings a note for each added point
+within chain_tolerance of both its segments. Other findings: twin_mismatch (json
+halfedges), domain_mismatch (the file's triangles are not the domain), and those of
+certify_constrained (chain_broken: a piece is not an edge, constraints_mismatch, ...).
+Verdict: "certified: the constrained Delaunay triangulation of N points and S segments
+(A added points), T triangles, the whole convex hull | of the domain (...), fill F";
+--json adds "segments", "added_points", "completion_triangles", "fill".
+
 Exit status: 0 certified, 1 a finding, or a file that cannot be read (the reason on
 standard error, with its line), 2 bad options.
 
 Options:
-      --input-format FMT  xy|json|node|f64 (POINTS)
+      --constraints FILE  certify a constrained triangulation of FILE's points and
+                          segments (.poly, .geojson, .json)
+      --input-format FMT  xy|json|node|f64 (POINTS); poly|geojson|json (CONSTRAINTS)
+      --fill RULE         --constraints: the domain the file must be: even-odd,
+                          non-zero, enclosed, all (then the hole seeds), or any
+                          union of regions bounded by pieces and the hull
+      --tolerate-crossings  --constraints: an added point within chain_tolerance of
+                          both its segments is a note, not a finding
       --columns X,Y       xy POINTS: the fields holding x and y, by number or name
   -f, --format FMT        json|ele|off|simplices (TRIANGULATION)
       --all               print every finding, not the first 64
@@ -187,7 +229,39 @@ int certify_command(std::span<const std::string_view> args) {
     app.add_flag("--json", s.json);
     app.add_flag("--strict", s.strict);
     app.add_flag("-q,--quiet", s.quiet);
+    std::optional<std::string> constraints;
+    ConstrainedCertifySettings c;
+    app.add_option("--constraints", constraints);
+    add_parsed(app, "--fill", "even-odd, non-zero, enclosed, all or any", c.fill,
+               [&c](const std::string& v) -> std::optional<std::optional<delaunay::FillRule>> {
+                   if (v == "any") {
+                       c.any_domain = true;
+                       return std::optional<delaunay::FillRule>{};
+                   }
+                   const std::optional<delaunay::FillRule> r = fill_rule_from_name(v);
+                   if (!r) return std::nullopt;
+                   c.any_domain = false;
+                   return r;
+               });
+    app.add_flag("--tolerate-crossings", c.tolerate_crossings);
     if (const std::optional<int> status = cli.parse(args)) return *status;
+    if (constraints) {
+        if (files.size() != 1) {
+            return cli.usage_error("with --constraints, expected one file, TRIANGULATION, got " +
+                                   std::to_string(files.size()));
+        }
+        if (s.columns) return cli.usage_error("--columns does not apply to --constraints");
+        c.input_format = s.input_format;
+        c.format = s.format;
+        c.all = s.all;
+        c.json = s.json;
+        c.strict = s.strict;
+        c.quiet = s.quiet;
+        return run_constrained_certify(*constraints, files[0], c, cli);
+    }
+    if (c.fill || c.any_domain || c.tolerate_crossings) {
+        return cli.usage_error("--fill and --tolerate-crossings need --constraints");
+    }
     if (files.size() != 2) {
         return cli.usage_error("expected two files, POINTS and TRIANGULATION, got " +
                                std::to_string(files.size()));

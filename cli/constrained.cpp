@@ -16,16 +16,6 @@ namespace exidel::cli {
 
 namespace {
 
-std::string_view fill_name(delaunay::FillRule rule) {
-    switch (rule) {
-        case delaunay::FillRule::even_odd: return "even-odd";
-        case delaunay::FillRule::non_zero: return "non-zero";
-        case delaunay::FillRule::enclosed: return "enclosed";
-        case delaunay::FillRule::all: return "all";
-    }
-    return "?";
-}
-
 struct Constrained {
     delaunay::ConstrainedResult result;
     std::string kernel_name;
@@ -56,7 +46,7 @@ void print_stats(std::ostream& err, const io::ConstraintFile& input, const Const
         {"regions", regions ? regions->region_count : 0},
         {"closed", regions ? regions->closed : true},
         {"unplaced_holes", regions ? regions->unplaced_holes.size() : 0},
-        {"fill", fill_name(rule)},
+        {"fill", fill_rule_name(rule)},
         {"kernel", c.kernel_name},
         {"algorithm", delaunay::to_string(o.algorithm)},
         {"failure", failure},
@@ -71,10 +61,20 @@ void print_stats(std::ostream& err, const io::ConstraintFile& input, const Const
 
 }  // namespace
 
+std::string_view fill_rule_name(delaunay::FillRule rule) {
+    switch (rule) {
+        case delaunay::FillRule::even_odd: return "even-odd";
+        case delaunay::FillRule::non_zero: return "non-zero";
+        case delaunay::FillRule::enclosed: return "enclosed";
+        case delaunay::FillRule::all: return "all";
+    }
+    return "?";
+}
+
 std::optional<delaunay::FillRule> fill_rule_from_name(const std::string& name) {
     for (const delaunay::FillRule r : {delaunay::FillRule::even_odd, delaunay::FillRule::non_zero,
                                        delaunay::FillRule::enclosed, delaunay::FillRule::all}) {
-        if (name == fill_name(r)) return r;
+        if (name == fill_rule_name(r)) return r;
     }
     return std::nullopt;
 }

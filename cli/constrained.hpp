@@ -30,5 +30,7 @@ int run_constrained(const PointCommand& command, const ConstrainedSettings& sett
 
 /// "even-odd", "non-zero", "enclosed", "all".
 std::optional<delaunay::FillRule> fill_rule_from_name(const std::string& name);
+/// The name of `rule`, as --fill spells it.
+std::string_view fill_rule_name(delaunay::FillRule rule);
 
 }  // namespace exidel::cli

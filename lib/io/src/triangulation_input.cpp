@@ -11,6 +11,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "exidel/io/constrained_input.hpp"
 #include "exidel/io/number.hpp"
 #include "exidel/io/points.hpp"
 #include "exidel/io/triangulation.hpp"
@@ -209,6 +210,7 @@ public:
             index_.emplace(key(points[i]), static_cast<std::uint32_t>(i));
         }
     }
+    void add(Point2 p, std::uint32_t i) { index_.emplace(key(p), i); }
     std::optional<std::uint32_t> find(Point2 p) const {
         const auto it = index_.find(key(p));
         return it == index_.end() ? std::nullopt : std::optional(it->second);
@@ -230,9 +232,11 @@ private:
     std::unordered_map<Key, std::uint32_t, Hash> index_;
 };
 
-ProducedTriangulation parse_off(std::string_view text, std::span<const Point2> points) {
+// OFF; `vertex(line, v, point, fields)` gives the index vertex v (at `point`, on line
+// `line`) stands for in the triangles.
+template <class Vertex>
+ProducedTriangulation parse_off(std::string_view text, Vertex&& vertex) {
     ProducedTriangulation p;
-    const PointIndex index(points);
     enum { magic, counts, vertices, faces, done } state = magic;
     std::size_t nv = 0, nf = 0, v = 0, f = 0;
     std::vector<std::uint32_t> input_of;  // OFF vertex -> input index
@@ -272,15 +276,7 @@ ProducedTriangulation parse_off(std::string_view text, std::span<const Point2> p
                 if (!d.value) throw ReadError::at_line(number, "vertex coordinate: " + d.error);
                 c[k] = *d.value;
             }
-            const std::optional<std::uint32_t> i = index.find({c[0], c[1]});
-            if (!i) {
-                throw ReadError::at_line(
-                    number, "vertex " + std::to_string(v) + " (" + std::string(fields[0]) + " " +
-                                std::string(fields[1]) +
-                                ") is not one of the input points (coordinates must "
-                                "read back exactly: write 17 significant digits)");
-            }
-            input_of.push_back(*i);
+            input_of.push_back(vertex(number, v, Point2{c[0], c[1]}, fields));
             if (++v == nv) state = nf ? faces : done;
             return;
         }
@@ -361,7 +357,21 @@ delaunay::ProducedTriangulation read_produced(std::string_view text, ProducedFor
     switch (format) {
         case ProducedFormat::json: return parse_json(text, points, false);
         case ProducedFormat::ele: return parse_ele(text, points.size());
-        case ProducedFormat::off: return parse_off(text, points);
+        case ProducedFormat::off: {
+            const PointIndex index(points);
+            return parse_off(text, [&](std::size_t number, std::size_t v, Point2 point,
+                                       const std::vector<std::string_view>& fields) {
+                const std::optional<std::uint32_t> i = index.find(point);
+                if (!i) {
+                    throw ReadError::at_line(
+                        number, "vertex " + std::to_string(v) + " (" + std::string(fields[0]) +
+                                    " " + std::string(fields[1]) +
+                                    ") is not one of the input points (coordinates must "
+                                    "read back exactly: write 17 significant digits)");
+                }
+                return *i;
+            });
+        }
         case ProducedFormat::simplices: return parse_simplices(text);
     }
     throw std::invalid_argument("unknown triangulation format");
@@ -376,6 +386,22 @@ delaunay::Triangulation parse_triangulation_json(std::string_view text) {
     tri.duplicates = std::move(*p.duplicates);
     tri.collinear = tri.triangles.empty();
     return tri;
+}
+
+ProducedConstrained read_constrained_off(std::string_view text, std::span<const Point2> input) {
+    ProducedConstrained c;
+    c.points.assign(input.begin(), input.end());
+    // The added points so far, by coordinates (an input point is found first).
+    PointIndex index(input);
+    c.mesh = parse_off(
+        text, [&](std::size_t, std::size_t, Point2 point, const std::vector<std::string_view>&) {
+            if (const std::optional<std::uint32_t> i = index.find(point)) return *i;
+            const auto i = static_cast<std::uint32_t>(c.points.size());
+            c.points.push_back(point);
+            index.add(point, i);
+            return i;
+        });
+    return c;
 }
 
 void fill_vertex_of_input(std::span<const Point2> points, delaunay::Triangulation& tri) {
