@@ -126,7 +126,10 @@ int run_constrained(const PointCommand& o, const ConstrainedSettings& settings,
         return finish(exit_failure);
     }
     const delaunay::ConstrainedTriangulation& cdt = c.result.cdt;
-    regions = delaunay::classify_regions(cdt, {rule, input->holes});
+    delaunay::RegionOptions region_options{rule, input->holes, {}};
+    for (const io::ConstraintFile::Region& g : input->regions)
+        region_options.attributes.push_back({g.seed, g.attribute});
+    regions = delaunay::classify_regions(cdt, region_options);
 
     if (settings.certify) {
         steps.progress.phase("certifying " + std::to_string(cdt.triangulation.triangle_count()) +
@@ -167,6 +170,11 @@ int run_constrained(const PointCommand& o, const ConstrainedSettings& settings,
             std::cerr << "exidel: note: hole " << h + input->index_base
                       << " is outside the triangulation or exactly on a segment or point; it "
                          "removes nothing\n";
+        }
+        for (const std::size_t h : regions->unplaced_attributes) {
+            std::cerr << "exidel: note: region " << h + input->index_base
+                      << " is outside the triangulation or exactly on a segment or point; it "
+                         "labels nothing\n";
         }
         if (!regions->closed && rule == delaunay::FillRule::non_zero) {
             std::cerr << "exidel: note: the segments do not form closed rings, so winding "

@@ -1,5 +1,6 @@
-// libFuzzer harness: Triangle's .poly reader (exidel/io/constraints.hpp) on arbitrary bytes. The
-// reader either returns a file whose coordinates are all finite, whose segments name its
+// libFuzzer harness: the constraint readers (exidel/io/constraints.hpp: Triangle's .poly,
+// GeoJSON, JSON {"points", "segments", "holes"}) on the same arbitrary bytes. Each reader
+// either returns a file whose coordinates are all finite, whose segments name its
 // points and whose markers, when present, number one per segment, or throws io::ReadError
 // naming the line; anything else (a crash, another exception, a sanitizer report, a hang)
 // is a finding.
@@ -55,5 +56,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string_view bytes(reinterpret_cast<const char*>(data), size);
     run(exidel::io::parse_poly, bytes);
     run(exidel::io::parse_geojson_constraints, bytes);
+    run(exidel::io::parse_json_constraints, bytes);
     return 0;
 }

@@ -129,6 +129,34 @@ TEST(ExidelConstrained, PolyInputIsConstrainedWithHoleSeeds) {
     EXPECT_NE(all.err.find("\"hull_triangles\": 10,"), std::string::npos) << all.err;
 }
 
+TEST(ExidelConstrained, RegionalAttributesLabelTriangles) {
+    // Triangle's -A: the two squares without a hole, the inner one labelled 10 and the ring
+    // around it 20; a third seed outside labels nothing and says so.
+    std::string poly = square_poly;
+    poly.replace(poly.find("1\n1 2 2\n"), 8, "0\n3\n1 2 2 10 -1\n2 0.5 0.5 20 0.1\n3 9 9 30\n");
+    const std::string in = write_file("attributes.poly", poly);
+    const RunResult r = run("'" + in + "' --certify -f json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("note: region 3 is outside"), std::string::npos) << r.err;
+    const json out = json::parse(r.out);
+    const auto tri = out["triangles"].get<std::vector<std::uint32_t>>();
+    const auto attribute = out["attribute"].get<std::vector<double>>();
+    ASSERT_EQ(attribute.size(), tri.size() / 3);
+    const std::vector<double> xy{0, 0, 4, 0, 4, 4, 0, 4, 1, 1, 3, 1, 3, 3, 1, 3};
+    for (std::size_t t = 0; t < attribute.size(); ++t) {
+        double cx = 0, cy = 0;
+        for (std::size_t k = 0; k < 3; ++k) {
+            cx += xy[2 * tri[3 * t + k]] / 3;
+            cy += xy[2 * tri[3 * t + k] + 1] / 3;
+        }
+        EXPECT_EQ(attribute[t], cx > 1 && cx < 3 && cy > 1 && cy < 3 ? 10 : 20) << t;
+    }
+    // .ele: one attribute column.
+    const RunResult ele = run("'" + in + "' -q -f ele");
+    ASSERT_EQ(ele.status, 0) << ele.err;
+    EXPECT_EQ(ele.out.substr(0, 8), "10 3 1\n1") << ele.out;
+}
+
 TEST(ExidelConstrained, EveryOutputFormat) {
     const std::string in = write_file("square_f.json", square_json);
     for (const std::string f :

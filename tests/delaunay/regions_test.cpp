@@ -127,6 +127,34 @@ TEST(Regions, EnclosedKeepsWhatTheSegmentsCloseOff) {
     EXPECT_EQ(twice_inside_area(cdt, classify_regions(cdt, o)), twice_area(l_shape) - 2 * 4);
 }
 
+TEST(Regions, AttributesLabelTheirRegions) {
+    Rings r;
+    r.ring(outer);
+    r.ring(inner_ccw);
+    const ConstrainedTriangulation cdt = triangulate(r);
+    RegionOptions o;
+    o.rule = FillRule::all;
+    o.attributes = {{{2, 2.5}, 7},    // the inner square
+                    {{0.5, 0.5}, 1},  // the ring between the squares
+                    {{3.5, 3.5}, 2},  // the same region again: overrides 1
+                    {{1, 2}, 9},      // on a piece: labels nothing
+                    {{9, 9}, 9}};     // outside
+    const Regions g = classify_regions(cdt, o);
+    ASSERT_EQ(g.attribute.size(), cdt.triangulation.triangle_count());
+    const auto& t = cdt.triangulation.triangles;
+    for (std::size_t i = 0; i < g.attribute.size(); ++i) {
+        // The centroid's side: inside the inner square [1, 3]^2 or not.
+        const double cx =
+            (cdt.points[t[3 * i]].x + cdt.points[t[3 * i + 1]].x + cdt.points[t[3 * i + 2]].x) / 3;
+        const double cy =
+            (cdt.points[t[3 * i]].y + cdt.points[t[3 * i + 1]].y + cdt.points[t[3 * i + 2]].y) / 3;
+        const bool inner = cx > 1 && cx < 3 && cy > 1 && cy < 3;
+        EXPECT_EQ(g.attribute[i], inner ? 7.0 : 2.0) << i;
+    }
+    EXPECT_EQ(g.unplaced_attributes, (std::vector<std::size_t>{3, 4}));
+    EXPECT_TRUE(classify_regions(cdt, {}).attribute.empty());
+}
+
 TEST(Regions, HoleSeedsRemoveTheirRegionOnly) {
     Rings r;
     r.ring(outer);

@@ -5,6 +5,7 @@
 #include <array>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <queue>
 #include <utility>
 #include <vector>
@@ -158,35 +159,53 @@ Regions classify_regions(const ConstrainedTriangulation& cdt, const RegionOption
     for (std::uint32_t t = 0; t < n; ++t)
         if (r.region[t] == unset) flood(t, r.region_count++);
 
+    // Seeds (holes, attributes): the region holding each, or none when it lies outside the
+    // hull, exactly on a piece or a vertex, or is not a point.
+    std::optional<Locator<AdaptiveKernel>> locator;
+    const auto region_of = [&](Point2 q) -> std::optional<std::uint32_t> {
+        if (!locator) locator.emplace(cdt.points, tri);
+        Location at;
+        try {
+            at = locator->locate(q);
+        } catch (const FailureError&) {
+            return std::nullopt;  // a NaN or infinite seed
+        }
+        bool placed = false;
+        if (at.kind == LocationKind::inside) {
+            placed = true;
+        } else if (at.kind == LocationKind::on_edge) {
+            // On an edge that is no piece, both triangles are in one region.
+            const auto e = static_cast<std::size_t>(at.edge);
+            placed = table.crossing(from(e), to(e)).count == 0;
+        }
+        if (!placed || at.triangle < 0) return std::nullopt;
+        return r.region[static_cast<std::size_t>(at.triangle)];
+    };
     // Hole seeds remove their region.
     if (!options.holes.empty()) {
-        Locator<AdaptiveKernel> locator(cdt.points, tri);
         std::vector<std::uint8_t> removed(r.region_count, 0);
         for (std::size_t i = 0; i < options.holes.size(); ++i) {
-            const Point2 q = options.holes[i];
-            Location at;
-            try {
-                at = locator.locate(q);
-            } catch (const FailureError&) {
-                r.unplaced_holes.push_back(i);  // a NaN or infinite seed
-                continue;
-            }
-            bool placed = false;
-            if (at.kind == LocationKind::inside) {
-                placed = true;
-            } else if (at.kind == LocationKind::on_edge) {
-                // On an edge that is no piece, both triangles are in one region.
-                const auto e = static_cast<std::size_t>(at.edge);
-                placed = table.crossing(from(e), to(e)).count == 0;
-            }
-            if (!placed || at.triangle < 0) {
+            const std::optional<std::uint32_t> g = region_of(options.holes[i]);
+            if (g)
+                removed[*g] = 1;
+            else
                 r.unplaced_holes.push_back(i);
-                continue;
-            }
-            removed[r.region[static_cast<std::size_t>(at.triangle)]] = 1;
         }
         for (std::size_t t = 0; t < n; ++t)
             if (removed[r.region[t]] != 0) r.inside[t] = 0;
+    }
+    // Regional attributes label their region; a later seed in the same region overrides.
+    if (!options.attributes.empty()) {
+        std::vector<double> of_region(r.region_count, 0.0);
+        for (std::size_t i = 0; i < options.attributes.size(); ++i) {
+            const std::optional<std::uint32_t> g = region_of(options.attributes[i].seed);
+            if (g)
+                of_region[*g] = options.attributes[i].attribute;
+            else
+                r.unplaced_attributes.push_back(i);
+        }
+        r.attribute.resize(n);
+        for (std::size_t t = 0; t < n; ++t) r.attribute[t] = of_region[r.region[t]];
     }
     return r;
 }

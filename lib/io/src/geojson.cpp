@@ -59,11 +59,11 @@ void wkt_position(NumberWriter& w, std::span<const Point2> points, std::span<con
 }  // namespace
 
 // The triangles of `tri` as Features, each on its own line after a ",\n" (the first after
-// "\n"), properties {"triangle": t, "vertices": [i, j, k]} and, when `region` is given,
-// "region": region[t]. Returns whether any was written.
+// "\n"), properties {"triangle": t, "vertices": [i, j, k]} and, when given, "region":
+// region[t] and "attribute": attribute[t]. Returns whether any was written.
 bool triangle_features(std::ostream& out, std::span<const Point2> points, const Triangulation& tri,
                        std::span<const double> z, unsigned threads,
-                       std::span<const std::uint32_t> region) {
+                       std::span<const std::uint32_t> region, std::span<const double> attribute) {
     const std::size_t n = tri.triangle_count();
     if (n == 0) return false;
     // Each position formatted once ("[x, y]" or "[x, y, z]"), then copied into the
@@ -88,6 +88,7 @@ bool triangle_features(std::ostream& out, std::span<const Point2> points, const 
             p = put(put(p, ", "), static_cast<std::uint64_t>(c[2]));
             p = put(p, "]");
             if (!region.empty()) p = put(put(p, ", \"region\": "), std::uint64_t{region[t]});
+            if (!attribute.empty()) p = put_json(put(p, ", \"attribute\": "), attribute[t]);
             p = put(p, "}, \"geometry\": {\"type\": \"Polygon\", \"coordinates\": [[");
             p = put(put(put(put(p, p0), ", "), p1), ", ");
             p = put(put(put(put(p, p2), ", "), p0), "]]}}");
@@ -102,7 +103,7 @@ void write_triangulation_geojson(std::ostream& out, std::span<const Point2> poin
                                  unsigned threads) {
     out << "{\"type\": \"FeatureCollection\", \"features\": [";
     const std::size_t n = tri.triangle_count();
-    triangle_features(out, points, tri, z, threads, {});
+    triangle_features(out, points, tri, z, threads, {}, {});
     NumberWriter w(out);
     const auto pos = [&](std::uint32_t v) { position(w, points, z, v); };
     // The hull: the boundary polygon, or for input without triangles the chain of its
@@ -135,10 +136,11 @@ void write_triangulation_geojson(std::ostream& out, std::span<const Point2> poin
 void write_constrained_geojson(std::ostream& out, std::span<const Point2> points,
                                const Triangulation& domain, std::span<const double> z,
                                unsigned threads, std::span<const std::uint32_t> region,
+                               std::span<const double> attribute,
                                const delaunay::ConstrainedTriangulation& cdt,
                                std::span<const std::int32_t> markers) {
     out << "{\"type\": \"FeatureCollection\", \"features\": [";
-    bool any = triangle_features(out, points, domain, z, threads, region);
+    bool any = triangle_features(out, points, domain, z, threads, region, attribute);
     NumberWriter w(out);
     const auto pos = [&](std::uint32_t v) { position(w, points, z, v); };
     const std::size_t segments = cdt.chain_offsets.empty() ? 0 : cdt.chain_offsets.size() - 1;

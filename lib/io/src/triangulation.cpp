@@ -60,7 +60,7 @@ void write_json(std::ostream& out, const Triangulation& tri, unsigned threads) {
 // write_constrained's json (exidel/io/constrained.hpp).
 void write_constrained_json(std::ostream& out, const delaunay::ConstrainedTriangulation& cdt,
                             const Triangulation& domain, const std::vector<std::uint32_t>& region,
-                            unsigned threads) {
+                            std::span<const double> attribute, unsigned threads) {
     const auto flat = [](const auto& pairs) {
         std::vector<std::uint32_t> v;
         v.reserve(2 * pairs.size());
@@ -73,6 +73,16 @@ void write_constrained_json(std::ostream& out, const delaunay::ConstrainedTriang
     json_array(out, domain.halfedges, threads);
     out << ",\n \"region\": ";
     json_array(out, region, threads);
+    if (!attribute.empty()) {
+        out << ",\n \"attribute\": [";
+        detail::write_items(
+            out, attribute.size(), threads, [&](std::size_t i, detail::TextBuffer& b) {
+                b.append(40, [&](char* p) {
+                    return detail::put_json(detail::put(p, i ? ", " : ""), attribute[i]);
+                });
+            });
+        out << "]";
+    }
     out << ",\n \"constraints\": ";
     json_array(out, flat(cdt.constraints), threads);
     out << ",\n \"chain_offsets\": ";
@@ -94,16 +104,20 @@ void write_constrained_json(std::ostream& out, const delaunay::ConstrainedTriang
     out << "}\n";
 }
 
-void write_ele(std::ostream& out, const Triangulation& tri, std::uint64_t base, unsigned threads) {
+// With `attributes` (one per triangle: Triangle's regional attributes), one attribute
+// column.
+void write_ele(std::ostream& out, const Triangulation& tri, std::uint64_t base, unsigned threads,
+               std::span<const double> attributes = {}) {
     const std::size_t n = tri.triangle_count();
-    out << n << " 3 0\n";
+    out << n << (attributes.empty() ? " 3 0\n" : " 3 1\n");
     detail::write_items(out, n, threads, [&](std::size_t t, detail::TextBuffer& b) {
-        b.append(96, [&](char* p) {
+        b.append(128, [&](char* p) {
             p = detail::put(p, static_cast<std::uint64_t>(t + base));
             for (std::size_t k = 0; k < 3; ++k) {
                 p = detail::put(detail::put(p, " "),
                                 static_cast<std::uint64_t>(tri.triangles[3 * t + k] + base));
             }
+            if (!attributes.empty()) p = detail::put(detail::put(p, " "), attributes[t]);
             return detail::put(p, "\n");
         });
     });
@@ -398,17 +412,20 @@ void write_constrained(std::ostream& out, const delaunay::ConstrainedTriangulati
     }
     const Triangulation domain = domain_triangulation(cdt, regions);
     std::vector<std::uint32_t> region;
+    std::vector<double> attribute;  // per domain triangle, when the regions have attributes
     region.reserve(domain.triangle_count());
     for (std::size_t t = 0; t < regions.inside.size(); ++t) {
-        if (regions.inside[t]) region.push_back(regions.region[t]);
+        if (!regions.inside[t]) continue;
+        region.push_back(regions.region[t]);
+        if (!regions.attribute.empty()) attribute.push_back(regions.attribute[t]);
     }
     switch (format) {
         case TriangulationFormat::json:
-            return write_constrained_json(out, cdt, domain, region, options.threads);
+            return write_constrained_json(out, cdt, domain, region, attribute, options.threads);
         case TriangulationFormat::svg: return write_svg(out, points, domain, cdt.constraints, true);
         case TriangulationFormat::geojson:
             return detail::write_constrained_geojson(out, points, domain, options.z,
-                                                     options.threads, region, cdt,
+                                                     options.threads, region, attribute, cdt,
                                                      options.segment_markers);
         case TriangulationFormat::poly: {
             // Each piece once, with the marker of the first segment whose chain holds it.
@@ -435,6 +452,7 @@ void write_constrained(std::ostream& out, const delaunay::ConstrainedTriangulati
                                       options.regions, options.index_base, options.threads);
         }
         case TriangulationFormat::ele:
+            return write_ele(out, domain, options.index_base, options.threads, attribute);
         case TriangulationFormat::off:
         case TriangulationFormat::wkt:
         case TriangulationFormat::ply:

@@ -28,12 +28,13 @@ void write_triangulation_ply(std::ostream& out, std::span<const Point2> points,
                              bool binary);
 
 /// The triangles of `domain` (over `points`, all vertices of `cdt`), each with its
-/// "region" when `region` is given, then one Feature per input segment of `cdt`: its chain
+/// "region" and "attribute" when given, then one Feature per input segment of `cdt`: its chain
 /// as a LineString (a Point for a segment whose ends are equal), properties {"segment": s,
 /// "vertices": [chain], "marker": m (when `markers` is given)}.
 void write_constrained_geojson(std::ostream& out, std::span<const Point2> points,
                                const delaunay::Triangulation& domain, std::span<const double> z,
                                unsigned threads, std::span<const std::uint32_t> region,
+                               std::span<const double> attribute,
                                const delaunay::ConstrainedTriangulation& cdt,
                                std::span<const std::int32_t> markers);
 

@@ -16,7 +16,9 @@
 // counter-clockwise outer rings and clockwise holes, both agree); FillRule::all keeps every
 // triangle. Then each hole seed (Triangle's convention) removes every triangle reachable from
 // the triangle holding it without crossing a piece. A seed outside the hull, or exactly on a
-// piece or a vertex, removes nothing and is listed in `unplaced_holes`. `region` numbers the
+// piece or a vertex, removes nothing and is listed in `unplaced_holes`. Regional attributes
+// (Triangle's -A) label the region around each seed the same way (`attribute`,
+// `unplaced_attributes`). `region` numbers the
 // parts the pieces cut the hull into (0, 1, ... in order of their first triangle).
 #pragma once
 
@@ -42,6 +44,13 @@ struct RegionOptions {
     FillRule rule = FillRule::even_odd;
     /// Hole seeds: each removes the region (bounded by pieces) that holds it.
     std::vector<Point2> holes;
+    /// Regional attributes (Triangle's -A): each labels the region that holds its seed;
+    /// a later seed in the same region overrides an earlier one.
+    struct Attribute {
+        Point2 seed;
+        double attribute = 0;
+    };
+    std::vector<Attribute> attributes{};
 };
 
 struct Regions {
@@ -52,6 +61,10 @@ struct Regions {
     std::uint32_t region_count = 0;
     bool closed = true;                       ///< the winding numbers agree across every edge
     std::vector<std::size_t> unplaced_holes;  ///< seeds outside, or on a piece or vertex
+    /// Per triangle the attribute of its region (0 where no seed labels it); empty when
+    /// no attributes were given.
+    std::vector<double> attribute{};
+    std::vector<std::size_t> unplaced_attributes{};  ///< as unplaced_holes
 
     /// The indices of the triangles in the domain, in order.
     std::vector<std::uint32_t> inside_triangles() const;

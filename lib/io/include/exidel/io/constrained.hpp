@@ -4,17 +4,20 @@
 //
 // Vertex indices are indices into cdt.points: the input points (input order, a repeated
 // point represented by its first occurrence), then the added crossing points from
-// cdt.input_count on. The formats (TriangulationFormat, exidel/io/triangulation.hpp):
+// cdt.input_count on. Regional attributes (Regions::attribute, from a .poly's regions) go
+// into json, geojson and ele. The formats (TriangulationFormat, triangulation.hpp):
 //
-//   json  {"triangles": [...], "halfedges": [...], "region": [...], "constraints": [...],
-//         "chain_offsets": [...], "chain_vertices": [...], "added_points": [[x, y], ...],
+//   json  {"triangles": [...], "halfedges": [...], "region": [...], "attribute": [...] (with
+//         attributes only), "constraints": [...], "chain_offsets": [...],
+//         "chain_vertices": [...], "added_points": [[x, y], ...],
 //         "crossings": [...], "duplicates": [...]}, one key per line: the domain's
 //         triangles (counter-clockwise, flat), halfedges in delaunator's layout (-1 where the
 //         neighbour across is outside the domain or the hull), each triangle's region, the
 //         pieces (u, v) flat, each input segment's chain (cdt.chain), the added points (the
 //         vertices from cdt.input_count on), for each added point the two input segments it
 //         is the rounded crossing of (flat), and the input indices that repeat a point.
-//   ele   Triangle's .ele of the domain's triangles, counted from WriteOptions::index_base;
+//   ele   Triangle's .ele of the domain's triangles, counted from WriteOptions::index_base
+//         (with regional attributes, "ntriangles 3 1" and each triangle's attribute);
 //         pair it with a .node of every vertex (write_points(cdt.points, node)).
 //   poly  Triangle's .poly: every vertex (as in .node, no attributes or markers), the
 //         pieces as segments (each once, with the marker of the first input segment whose
@@ -23,7 +26,8 @@
 //         has its hull edges as segments, as Triangle writes one.
 //   off, ply, ply-ascii, wkt  the domain's triangles over every vertex, z as given.
 //   geojson  the domain's triangles as Features with properties {"triangle", "vertices",
-//         "region"}, then one LineString Feature per input segment: its chain, properties
+//         "region", "attribute" (with attributes)}, then one LineString Feature per input
+//         segment: its chain, properties
 //         {"segment": s, "vertices": [chain], "marker": m (when markers are given)}.
 //   svg   the domain's triangles (filled, every edge once), the pieces drawn thicker in
 //         red, the vertices as dots; in the data's coordinates as for a triangulation.
