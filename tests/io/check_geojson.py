@@ -4,8 +4,9 @@ only (ctest: exidel_geojson_rfc7946).
 
 usage: check_geojson.py FILE...              check each file, print "ok: FILE (...)"
        check_geojson.py --exidel EXIDEL DIR  write exidel's GeoJSON outputs into DIR
-                                             (triangulations, Voronoi diagrams, collinear,
-                                             tiny and z input) and check every one
+                                             (triangulations, constrained ones, Voronoi
+                                             diagrams, collinear, tiny and z input) and
+                                             check every one
 
 Checks: every object's "type" member; a FeatureCollection has a "features" array of
 Features and nothing else as type; a Feature has "geometry" (a geometry object or null)
@@ -237,6 +238,42 @@ def exidel_outputs(exidel, work):
     doc = check("point.geojson", run(exidel, ["triangulate", "-q", "-f", "geojson"], "3 4\n3 4\n"), 1)
     expect(doc["features"][0]["geometry"] == {"type": "Point", "coordinates": [3, 4]}, "one point")
     check("empty.geojson", run(exidel, ["triangulate", "-q", "-f", "geojson"], ""), 0)
+    # Constrained (--constraints): a UTM-sized square with a square hole and an island in
+    # it (rings), and a breakline with z crossing everything: the domain's triangles with
+    # their region, then each segment's chain as a LineString; the domain's area is exactly
+    # the polygons' (even-odd), the rings' crossings with the breakline included.
+    def ring(x0, y0, side, clockwise, z):
+        corners = [(x0, y0), (x0 + side, y0), (x0 + side, y0 + side), (x0, y0 + side)]
+        if clockwise:
+            corners.reverse()
+        return [[x, y, z] for x, y in corners + corners[:1]]
+    polygons = [[ring(500000, 4000000, 600, False, 10), ring(500100, 4000100, 400, True, 20)],
+                [ring(500200, 4000200, 200, False, 30)]]
+    constraints = {"type": "FeatureCollection", "features": [
+        {"type": "Feature", "properties": {"name": "parcel"},
+         "geometry": {"type": "MultiPolygon", "coordinates": polygons}},
+        {"type": "Feature", "properties": None,
+         "geometry": {"type": "LineString",
+                      "coordinates": [[499990, 4000301.5, 0], [500610, 4000301.25, 5]]}}]}
+    text = run(exidel, ["triangulate", "-q", "--constraints", "--input-format", "geojson",
+                        "-f", "geojson", "--certify"], json.dumps(constraints))
+    doc = check("constrained.geojson", text)
+    triangles = [f for f in doc["features"] if f["geometry"]["type"] == "Polygon"]
+    chains = [f for f in doc["features"] if f["geometry"]["type"] == "LineString"]
+    expect(len(chains) == 4 + 4 + 4 + 1, f"constrained: {len(chains)} chains, expected 13")
+    expect(all("region" in f["properties"] and len(p) == 3
+               for f in triangles for p in f["geometry"]["coordinates"][0]),
+           "constrained: a triangle without its region or z")
+    expect(len(chains[-1]["geometry"]["coordinates"]) == 2 + 6,
+           "constrained: the breakline does not pass its 6 crossings")
+
+    def twice_area(r):
+        return sum(Fraction(a[0]) * Fraction(b[1]) - Fraction(b[0]) * Fraction(a[1])
+                   for a, b in zip(r, r[1:]))
+    domain = sum(twice_area(f["geometry"]["coordinates"][0]) for f in triangles)
+    expect(domain == 2 * (600 * 600 - 400 * 400 + 200 * 200),
+           f"constrained: the domain's area is {domain / 2}, not the polygons'")
+    checked.append("constrained area")
     # Voronoi diagrams, clipped by default and to a box: one Feature per site.
     doc = check("vor.geojson", run(exidel, ["voronoi", "-q", "-f", "geojson"], xy), len(pts))
     for i, f in enumerate(doc["features"]):
