@@ -34,7 +34,7 @@ class ConstrainedDelaunay:
     exact with an exact kernel, and the regions the segments cut it into.
 
     ConstrainedDelaunay(points, segments, holes=None, rule="even_odd", kernel="adaptive",
-                        algorithm="external", max_added_points=None)
+                        algorithm="external", max_added_points=None, attributes=None)
 
     points     array of shape (n, 2), float64 (other dtypes are converted once). Duplicates,
                collinear sets and fewer than three points are accepted as by Delaunay; a
@@ -50,8 +50,12 @@ class ConstrainedDelaunay:
                triangles reached from outside the hull by crossing an odd number of
                constraint pieces), "non_zero" (nonzero winding number of the chains),
                "enclosed" (every triangle a walk from outside reaches only by crossing a
-               piece: Triangle's convention, holes given by seeds), "all" (every triangle). For rings (counter-clockwise outer rings, clockwise holes)
+               piece: Triangle's convention, holes given by seeds), "all" (every
+               triangle). For rings (counter-clockwise outer rings, clockwise holes)
                even_odd and non_zero agree. ValueError for another name.
+    attributes regional attributes (Triangle's -A), shape (a, 3) rows (x, y, value) or
+               None: each labels the region holding its seed with its value (a later seed
+               in the same region overrides); `attribute` gives each triangle's.
     kernel     any kernel spelling of the exidel command (exidel.kernel_spellings). With an
                inexact kernel ("double", ...) the result may be wrong (certify() says so) or
                the run raises TriangulationError.
@@ -115,6 +119,9 @@ class ConstrainedDelaunay:
                    on the walk
       unplaced_holes  int64 indices of the seeds that removed nothing: outside the hull, or
                    exactly on a piece or a vertex
+      attribute    (t,) float64: the attribute of the triangle's region (0 where no seed
+                   labels it), or None without attributes; unplaced_attributes as
+                   unplaced_holes
       holes, rule, kernel (its canonical name), stats
     certify(all=False) decides all of this exactly (exidel.Certificate).
 
@@ -126,7 +133,7 @@ class ConstrainedDelaunay:
     ndim = 2
 
     def __init__(self, points, segments, holes=None, rule="even_odd", kernel="adaptive",
-                 algorithm="external", max_added_points=None):
+                 algorithm="external", max_added_points=None, attributes=None):
         if not isinstance(rule, str) or rule not in RULES:
             raise ValueError(f"unknown rule {rule!r}; expected even_odd|non_zero|enclosed|all")
         if max_added_points is None:
@@ -143,7 +150,17 @@ class ConstrainedDelaunay:
                  else np.ascontiguousarray(holes, dtype=np.float64))
         if seeds.size == 0:
             seeds = np.empty((0, 2))
-        r = _core.constrained_delaunay(pts, segs, kernel, algorithm, seeds, rule, limit)
+        labels = (np.empty((0, 3)) if attributes is None
+                  else np.ascontiguousarray(attributes, dtype=np.float64))
+        if labels.size == 0:
+            labels = np.empty((0, 3))
+        if labels.ndim != 2 or labels.shape[1] != 3:
+            raise ValueError(f"attributes: expected shape (a, 3) rows (x, y, value), got "
+                             f"{labels.shape}")
+        if not np.isfinite(labels).all():
+            raise ValueError("attributes: a seed or value is NaN or infinite")
+        r = _core.constrained_delaunay(pts, segs, kernel, algorithm, seeds, rule, limit,
+                                       labels)
         failure = r.get("failure")
         if failure is not None:
             raise TriangulationError(failure["kind"], failure["input_index"],
@@ -173,6 +190,8 @@ class ConstrainedDelaunay:
         self.inside = r["inside"]
         self.closed = bool(r["closed"])
         self.unplaced_holes = r["unplaced_holes"]
+        self.attribute = r["attribute"] if attributes is not None else None
+        self.unplaced_attributes = r["unplaced_attributes"]
         self.stats = {
             "kernel": self.kernel,
             "points": self.input_count,

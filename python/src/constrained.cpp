@@ -136,8 +136,8 @@ std::vector<Segment> to_segments(const py::handle& object, std::size_t points,
 /// `holes`, or 'failure'.
 py::dict constrained(py::object points_object, py::object segments_object,
                      const std::string& kernel_name, const std::string& algorithm,
-                     py::object holes_object, const std::string& rule,
-                     std::size_t max_added_points) {
+                     py::object holes_object, const std::string& rule, std::size_t max_added_points,
+                     py::object attributes_object) {
     const Points points = to_points(points_object, "points");
     if (points.single) throw py::value_error("points: expected shape (n, 2), got (2,)");
     if (points.rows > delaunay::detail::max_points) {
@@ -155,6 +155,15 @@ py::dict constrained(py::object points_object, py::object segments_object,
     if (!holes_object.is_none()) {
         const Points holes = to_points(holes_object, "holes");
         region_options.holes.assign(holes.data, holes.data + holes.rows);
+    }
+    if (!attributes_object.is_none()) {
+        // Rows (x, y, value), checked finite by the Python side.
+        const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(
+            attributes_object);
+        if (!a || (a.size() != 0 && (a.ndim() != 2 || a.shape(1) != 3)))
+            throw py::value_error("attributes: expected shape (a, 3)");
+        for (py::ssize_t i = 0; a.size() != 0 && i < a.shape(0); ++i)
+            region_options.attributes.push_back({{a.at(i, 0), a.at(i, 1)}, a.at(i, 2)});
     }
     py::dict d;
     if (bad_segment) {
@@ -200,6 +209,10 @@ py::dict constrained(py::object points_object, py::object segments_object,
     std::vector<std::int64_t> unplaced(regions.unplaced_holes.begin(),
                                        regions.unplaced_holes.end());
     d["unplaced_holes"] = to_numpy(std::move(unplaced));
+    d["attribute"] = to_numpy(std::move(regions.attribute));
+    std::vector<std::int64_t> unplaced_attributes(regions.unplaced_attributes.begin(),
+                                                  regions.unplaced_attributes.end());
+    d["unplaced_attributes"] = to_numpy(std::move(unplaced_attributes));
     return d;
 }
 
@@ -278,7 +291,7 @@ void bind_constrained(py::module_& m) {
     m.def("constrained_delaunay", &constrained, py::arg("points"), py::arg("segments"),
           py::arg("kernel") = "adaptive", py::arg("algorithm") = "external",
           py::arg("holes") = py::none(), py::arg("rule") = "even_odd",
-          py::arg("max_added_points") = 0,
+          py::arg("max_added_points") = 0, py::arg("attributes") = py::none(),
           "The constrained Delaunay triangulation's arrays (points with the added crossing "
           "points, input_count, triangles (m, 3), halfedges, hull, vertex_of_input, "
           "duplicates, collinear, chain_offsets, chain_vertices, crossings (k, 2), "

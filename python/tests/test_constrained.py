@@ -539,3 +539,23 @@ def test_repr_and_stats(rng):
                                 "8 segments")
     assert repr(cdt.certify()) == "<exidel.Certificate: ok>"
     assert "ConstrainedDelaunay" in exidel.__all__
+
+
+def test_regional_attributes_label_their_regions(rng):
+    pts, segs = square_with_hole(rng, hole=HOLE[::-1])
+    cdt = exidel.ConstrainedDelaunay(pts, segs, rule="all",
+                                     attributes=[(1.5, 1.5, 7.0), (10.0, 10.0, 9.0),
+                                                 (3.2, 2.8, 2.0)])
+    assert cdt.attribute.shape == (cdt.nsimplex,)
+    assert cdt.unplaced_attributes.tolist() == [1]
+    inside_hole = cdt.attribute == 7.0
+    assert inside_hole.any() and (cdt.attribute[~inside_hole] != 7.0).all()
+    # The hole's triangles are exactly one region, the one labelled 7; the ring between
+    # the outer square and the hole is labelled 2.
+    assert len(set(cdt.regions[inside_hole].tolist())) == 1
+    assert (cdt.attribute == 2.0).any()
+    assert exidel.ConstrainedDelaunay(pts, segs).attribute is None
+    with pytest.raises(ValueError):
+        exidel.ConstrainedDelaunay(pts, segs, attributes=[(0.0, 0.0)])
+    with pytest.raises(ValueError):
+        exidel.ConstrainedDelaunay(pts, segs, attributes=[(0.0, 0.0, float("nan"))])
