@@ -37,8 +37,13 @@ report.md starts with the command that writes the same files again):
                  the failure rate against MPFR precision, one line per algorithm
   stages         which stage of the adaptive kernel decides, on query streams and
                  inside triangulations
-  all            the four above into DIR/<study>/ and DIR/report.md, each with its
-                 defaults (so `all` takes only the common options below)
+  constrained    every kernel x family of constrained inputs (crossing grids, segments
+                 through lattice points, nearly parallel segments, polygons with holes,
+                 random segments): constrained_delaunay certified, wrong, failure
+                 detected, or too_many_crossings, with the failure and finding kinds
+  all            failure-map, precision, triangulation and stages into DIR/<study>/
+                 and DIR/report.md, each with its defaults (so `all` takes only the
+                 common options below)
   replay         classify one point file as the triangulation study would:
                  exidel study replay -i FILE --kernel K [--incircle determinant|cosine]
                                      [--algorithm NAME] [--order lexicographic|radial|strips]
@@ -101,6 +106,13 @@ stages:
   --seeds N triangulations per family and context (default 4; quick 2); contexts:
                   lexicographic with each in-circle policy, radial with the determinant
   --size N        points per triangulation (default 1000; quick 200)
+
+constrained:
+  --kernel LIST   (default double,long-double,mpfr:53,mpfr:106,adaptive,exact)
+  --families LIST crossing_grid, lattice_segments, nearly_parallel,
+                  polygon_with_holes, random_segments, or 'all' (default all)
+  --seeds N       inputs per family (default 40, sizes 60-300 points and 16-40
+                  segments, cycled; quick 3, sizes 40-60 points and 12-16 segments)
 
 Exit status: 0 success, 1 a study failed (I/O), 2 bad options.
 
@@ -410,6 +422,13 @@ int study_command(std::span<const std::string_view> args) {
                 }
             }
             run_and_report(p, o, run_triangulation_study, seconds);
+        } else if (p.study == "constrained") {
+            ConstrainedStudyOptions o;
+            if (p.kernels) o.kernels = split(*p.kernels, ',');
+            for (const std::string& k : o.kernels) (void)research::parse_kernel(k);
+            if (p.families) o.families = parse_constrained_families(*p.families);
+            if (p.seeds) o.seeds = *p.seeds;
+            run_and_report(p, o, run_constrained_study, seconds);
         } else if (p.study == "stages") {
             StagesOptions o;
             if (p.families) o.families = parse_families(*p.families);

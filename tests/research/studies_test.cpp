@@ -961,6 +961,53 @@ TEST(Regression, Mpfr106CosineNearLineNotDelaunay) {
               Outcome::delaunay);
 }
 
+// --- constrained -------------------------------------------------------------------
+
+// The quick study: the exact-sign kernels certify every run that is not too_many_crossings
+// (a limit of the construction, not a kernel error), the report names every family, and
+// with the default seed the double kernel gets crossing_grid wrong or stops on it (in
+// every quick run: 0 certified of 3; other families vary with the seed).
+TEST(Constrained, ExactSignKernelsAreCertifiedAndDoubleBreaksOnTheCrossingGrid) {
+    const RunOptions run = quiet_run(work_dir("constrained"));
+    const ConstrainedStudy study = run_constrained_study({}, run);
+    ASSERT_EQ(study.kernels.size(), 6u);
+    ASSERT_EQ(study.families.size(), all_constrained_families.size());
+    ASSERT_EQ(study.runs.size(), 6u * all_constrained_families.size() * 3);
+    const auto certified = std::size_t(ConstrainedOutcome::certified);
+    const auto wrong = std::size_t(ConstrainedOutcome::wrong);
+    const auto failure = std::size_t(ConstrainedOutcome::failure);
+    for (std::size_t k = 0; k < study.kernels.size(); ++k) {
+        if (study.kernels[k] != "adaptive" && study.kernels[k] != "exact") continue;
+        for (std::size_t f = 0; f < study.families.size(); ++f) {
+            EXPECT_EQ(study.at(k, f)[wrong], 0u) << study.kernels[k] << " " << f;
+            EXPECT_EQ(study.at(k, f)[failure], 0u) << study.kernels[k] << " " << f;
+            EXPECT_GT(study.at(k, f)[certified], 0u) << study.kernels[k] << " " << f;
+        }
+    }
+    const auto grid = std::size_t(
+        std::find(study.families.begin(), study.families.end(), ConstrainedFamily::crossing_grid) -
+        study.families.begin());
+    const auto dbl = std::size_t(std::find(study.kernels.begin(), study.kernels.end(), "double") -
+                                 study.kernels.begin());
+    ASSERT_LT(dbl, study.kernels.size());
+    EXPECT_GT(study.at(dbl, grid)[wrong] + study.at(dbl, grid)[failure], 0u);
+    write_text_file(run.out / "report.md", study.report.render());  // as the CLI does
+    const std::string report = read_file(run.out / "report.md");
+    ASSERT_FALSE(report.empty()) << "no report.md";
+    for (ConstrainedFamily f : all_constrained_families)
+        EXPECT_NE(report.find(std::string(to_string(f))), std::string::npos) << to_string(f);
+    EXPECT_TRUE(fs::exists(run.out / "constrained.csv"));
+    // The inputs are a function of the seed: the same seed draws the same input.
+    const ConstrainedInput a = draw_constrained_input(ConstrainedFamily::polygon_with_holes, 7, 40,
+                                                      12),
+                           b = draw_constrained_input(ConstrainedFamily::polygon_with_holes, 7, 40,
+                                                      12);
+    EXPECT_EQ(a.points, b.points);
+    EXPECT_EQ(a.segments, b.segments);
+    EXPECT_EQ(a.points.size(), 40u);
+    EXPECT_EQ(a.segments.size(), 12u);
+}
+
 // --- stages ------------------------------------------------------------------------
 
 TEST(Stages, CountsEveryCallAndUniformInputStaysInTheFilter) {

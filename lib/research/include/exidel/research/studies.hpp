@@ -1,4 +1,4 @@
-// exidel::research: the four studies of `exidel study`. Each takes its own options and
+// exidel::research: the studies of `exidel study`. Each takes its own options and
 // the common RunOptions, writes report.md, CSVs and pictures into run.out, and returns
 // what it measured (for the tests and for `study all`).
 //
@@ -12,6 +12,9 @@
 //                  (flips, predicate calls) of each insertion order with the adaptive kernel
 //   stages         which stage of the adaptive kernel decides, on predicate streams and
 //                  inside triangulations
+//   constrained    every kernel x family of constrained inputs (crossings, segments
+//                  through points, nearly parallel segments, polygons with holes): how
+//                  constrained_delaunay ends (certified, wrong, failure detected)
 #pragma once
 
 #include <array>
@@ -23,6 +26,7 @@
 #include <vector>
 
 #include "exidel/delaunay/algorithms.hpp"
+#include "exidel/delaunay/constrained.hpp"
 #include "exidel/delaunay/result.hpp"
 #include "exidel/predicates/staged.hpp"
 #include "exidel/predicates/wrapper.hpp"
@@ -389,5 +393,102 @@ Report family_definitions(std::span<const testing::Family> families, bool standa
 /// Families by name from a comma-separated list; "all", "near" (the near_degenerate
 /// families) and "degenerate" (the degenerate ones) stand for several.
 std::vector<testing::Family> parse_families(std::string_view list);
+
+}  // namespace exidel::research
+
+// =================================================================================
+// constrained
+
+namespace exidel::research {
+
+/// The families of constrained inputs (points and segments) of the constrained study,
+/// each drawn deterministically from a seed (src/constrained.cpp says how).
+enum class ConstrainedFamily {
+    crossing_grid,       ///< k x k segments of a rotated grid, ends and crossing points ulps off
+    lattice_segments,    ///< a lattice scaled by 0.1; segments through (nearly) other points
+    nearly_parallel,     ///< a bundle of segments within ulps of one line, plus a few across
+    polygon_with_holes,  ///< a star polygon with a star hole, points within ulps of the sides
+    random_segments,     ///< random segments between random points (the control)
+};
+inline constexpr std::array all_constrained_families{
+    ConstrainedFamily::crossing_grid, ConstrainedFamily::lattice_segments,
+    ConstrainedFamily::nearly_parallel, ConstrainedFamily::polygon_with_holes,
+    ConstrainedFamily::random_segments};
+std::string_view to_string(ConstrainedFamily f) noexcept;
+/// One sentence saying how a family's inputs are drawn.
+std::string_view constrained_family_definition(ConstrainedFamily f);
+/// Families from a comma-separated list of the names above and "all", in the order
+/// given, repeats dropped. Throws std::invalid_argument naming the spellings.
+std::vector<ConstrainedFamily> parse_constrained_families(std::string_view list);
+
+/// One constrained input.
+struct ConstrainedInput {
+    std::vector<Point2> points;
+    std::vector<delaunay::Segment> segments;
+};
+
+/// The input of `family` drawn from `seed`: about `points` points and at most `segments`
+/// segments (a pure function of the three).
+ConstrainedInput draw_constrained_input(ConstrainedFamily family, std::uint64_t seed,
+                                        std::size_t points, std::size_t segments);
+
+enum class ConstrainedOutcome {
+    certified,           ///< certify_constrained found nothing
+    wrong,               ///< a result whose certificate has findings (detail: their kinds)
+    failure,             ///< a typed Failure other than too_many_crossings (detail: its kind)
+    too_many_crossings,  ///< the crossing cascade did not settle (not a kernel error)
+};
+inline constexpr std::array all_constrained_outcomes{
+    ConstrainedOutcome::certified, ConstrainedOutcome::wrong, ConstrainedOutcome::failure,
+    ConstrainedOutcome::too_many_crossings};
+std::string_view to_string(ConstrainedOutcome o) noexcept;
+
+struct ConstrainedClassification {
+    ConstrainedOutcome outcome = ConstrainedOutcome::certified;
+    /// wrong: the distinct FindingKind names of the certificate (of its first 64 findings);
+    /// failure and too_many_crossings: the FailureKind name; certified: empty.
+    std::vector<std::string> kinds;
+    std::size_t added_points = 0;  ///< crossing points added (a result only)
+};
+
+/// Runs constrained_delaunay with `kernel` and certifies the result exactly. An exception
+/// from the library (anything but its typed Failure, which is an outcome) is a bug: it is
+/// rethrown as std::runtime_error saying what was running.
+ConstrainedClassification classify_constrained(const ConstrainedInput& input, const Kernel& kernel);
+
+struct ConstrainedStudyOptions {
+    /// empty: double, long-double, mpfr:53, mpfr:106, adaptive, exact
+    std::vector<std::string> kernels;
+    std::vector<ConstrainedFamily> families;  ///< empty: every family
+    std::size_t seeds = 0;                    ///< inputs per family; 0: 24 (quick: 3)
+};
+
+struct ConstrainedRun {
+    ConstrainedFamily family;
+    std::size_t seed_index = 0, points = 0, segments = 0;
+    std::string kernel;
+    ConstrainedClassification result;
+};
+
+/// Outcome counts of one kernel on one family, in all_constrained_outcomes order.
+using ConstrainedCounts = std::array<std::uint64_t, all_constrained_outcomes.size()>;
+
+struct ConstrainedStudy : StudyResult {
+    std::vector<std::string> kernels;
+    std::vector<ConstrainedFamily> families;
+    std::vector<ConstrainedRun> runs;  ///< per family, seed, then kernel
+    /// counts[k * families.size() + f]: kernel k on family f.
+    std::vector<ConstrainedCounts> counts;
+    const ConstrainedCounts& at(std::size_t kernel, std::size_t family) const {
+        return counts[kernel * families.size() + family];
+    }
+};
+
+/// Every kernel on the same seeded inputs of every family: how constrained_delaunay ends
+/// (certified, wrong, failure detected, too_many_crossings). Writes constrained.csv (one
+/// row per run) and constrained_kinds.csv into run.out and returns the report (the caller
+/// writes report.md, as `exidel study constrained` does) and the main table.
+ConstrainedStudy run_constrained_study(const ConstrainedStudyOptions& options,
+                                       const RunOptions& run);
 
 }  // namespace exidel::research
