@@ -15,23 +15,11 @@ namespace {
 
 constexpr std::int64_t max_u32 = 0xffffffff, max_i32 = 0x7fffffff;
 
-template <class T>
-std::vector<T> integers(detail::JsonCursor& j, std::string_view key, std::int64_t lo,
-                        std::int64_t hi) {
-    std::vector<T> v;
-    j.expect('[', "to open the array \"" + std::string(key) + "\"");
-    if (j.accept(']')) return v;
-    do {
-        v.push_back(static_cast<T>(j.integer(key, lo, hi)));
-    } while (j.accept(','));
-    j.expect(']', "or ',' in the array \"" + std::string(key) + "\"");
-    return v;
-}
-
 // A flat array of pairs [a0, b0, a1, b1, ...].
 std::vector<std::array<std::uint32_t, 2>> pairs(detail::JsonCursor& j, std::string_view key) {
     const std::size_t line = j.line();
-    const std::vector<std::uint32_t> flat = integers<std::uint32_t>(j, key, 0, max_u32);
+    const std::vector<std::uint32_t> flat =
+        detail::integer_array<std::uint32_t>(j, key, 0, max_u32);
     if (flat.size() % 2 != 0) {
         throw ReadError::at_line(line, "\"" + std::string(key) + "\" holds " +
                                            std::to_string(flat.size()) +
@@ -88,15 +76,25 @@ ProducedConstrained read_constrained_json(std::string_view text, std::span<const
         seen[k] = true;
         j.expect(':', "after the key");
         switch (k) {
-            case 0: p.mesh.triangles = integers<std::uint32_t>(j, key, 0, max_u32); break;
-            case 1: p.chain_offsets = integers<std::uint32_t>(j, key, 0, max_u32); break;
-            case 2: p.chain_vertices = integers<std::uint32_t>(j, key, 0, max_u32); break;
+            case 0:
+                p.mesh.triangles = detail::integer_array<std::uint32_t>(j, key, 0, max_u32);
+                break;
+            case 1:
+                p.chain_offsets = detail::integer_array<std::uint32_t>(j, key, 0, max_u32);
+                break;
+            case 2:
+                p.chain_vertices = detail::integer_array<std::uint32_t>(j, key, 0, max_u32);
+                break;
             case 3: added = points(j); break;
             case 4: p.crossings = pairs(j, key); break;
-            case 5: p.mesh.halfedges = integers<std::int32_t>(j, key, -1, max_i32); break;
-            case 6: p.region = integers<std::uint32_t>(j, key, 0, max_u32); break;
+            case 5:
+                p.mesh.halfedges = detail::integer_array<std::int32_t>(j, key, -1, max_i32);
+                break;
+            case 6: p.region = detail::integer_array<std::uint32_t>(j, key, 0, max_u32); break;
             case 7: p.constraints = pairs(j, key); break;
-            default: p.mesh.duplicates = integers<std::uint32_t>(j, key, 0, max_u32); break;
+            default:
+                p.mesh.duplicates = detail::integer_array<std::uint32_t>(j, key, 0, max_u32);
+                break;
         }
     } while (j.accept(','));
     j.expect('}', "or ',' after an array");

@@ -10,33 +10,12 @@
 
 namespace exidel::io {
 
-namespace {
-
-// "[[x, y], ...]" into `out`.
-void json_points(detail::JsonCursor& j, std::vector<Point2>& out, const char* what) {
-    j.expect('[', (std::string("to open the array of ") + what).c_str());
-    if (j.accept(']')) return;
-    do {
-        j.expect('[', "to open a point [x, y]");
-        const double x = j.number("x");
-        if (j.peek() == ']') j.fail("a point is [x, y]: y is missing");
-        j.expect(',', "between x and y");
-        const double y = j.number("y");
-        if (j.peek() == ',') j.fail("a point is [x, y]: found a third coordinate");
-        j.expect(']', "to close the point");
-        out.push_back({x, y});
-    } while (j.accept(','));
-    j.expect(']', "or ',' after a point");
-}
-
-}  // namespace
-
 ConstraintFile parse_json_constraints(std::string_view data) {
     ConstraintFile file;
     detail::JsonCursor j(data);
     if (j.at_end()) return file;
     if (j.peek() == '[') {  // a bare array of points
-        json_points(j, file.points, "points");
+        detail::point_array(j, file.points, "points");
         if (!j.at_end()) j.fail("unexpected " + j.found() + " after the closing ']'");
         return file;
     }
@@ -55,10 +34,10 @@ ConstraintFile parse_json_constraints(std::string_view data) {
             j.expect(':', "after a key");
             if (key == "points") {
                 once(seen_points, key);
-                json_points(j, file.points, "points");
+                detail::point_array(j, file.points, "points");
             } else if (key == "holes") {
                 once(seen_holes, key);
-                json_points(j, file.holes, "holes");
+                detail::point_array(j, file.holes, "holes");
             } else if (key == "segments") {
                 once(seen_segments, key);
                 j.expect('[', "to open the array of segments");

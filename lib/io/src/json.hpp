@@ -16,6 +16,7 @@
 #include <string>
 #include <string_view>
 #include <system_error>
+#include <vector>
 
 #include "exidel/io/number.hpp"
 #include "exidel/io/points.hpp"
@@ -154,5 +155,36 @@ private:
     std::size_t i_ = 0;
     std::size_t line_ = 1;
 };
+
+/// "[[x, y], ...]" appended to `out`; `what` names the array in messages ("points").
+inline void point_array(JsonCursor& j, std::vector<Point2>& out, std::string_view what) {
+    j.expect('[', "to open the array of " + std::string(what));
+    if (j.accept(']')) return;
+    do {
+        j.expect('[', "to open a point [x, y]");
+        const double x = j.number("x");
+        if (j.peek() == ']') j.fail("a point is [x, y]: y is missing");
+        j.expect(',', "between x and y");
+        const double y = j.number("y");
+        if (j.peek() == ',') j.fail("a point is [x, y]: found a third coordinate");
+        j.expect(']', "to close the point");
+        out.push_back({x, y});
+    } while (j.accept(','));
+    j.expect(']', "or ',' after a point");
+}
+
+/// "[i, j, ...]" of integers in [lo, hi], the array named `key` in messages.
+template <class T>
+std::vector<T> integer_array(JsonCursor& j, std::string_view key, std::int64_t lo,
+                             std::int64_t hi) {
+    std::vector<T> v;
+    j.expect('[', "to open the array \"" + std::string(key) + "\"");
+    if (j.accept(']')) return v;
+    do {
+        v.push_back(static_cast<T>(j.integer(key, lo, hi)));
+    } while (j.accept(','));
+    j.expect(']', "or ',' in the array \"" + std::string(key) + "\"");
+    return v;
+}
 
 }  // namespace exidel::io::detail

@@ -319,20 +319,7 @@ std::vector<Point2> parse_json(std::string_view data) {
     detail::JsonCursor j(data);
     std::vector<Point2> points;
     if (j.at_end()) return points;
-    j.expect('[', "to open the array of points");
-    if (!j.accept(']')) {
-        do {
-            j.expect('[', "to open a point [x, y]");
-            const double x = j.number("x");
-            if (j.peek() == ']') j.fail("a point is [x, y]: y is missing");
-            j.expect(',', "between x and y");
-            const double y = j.number("y");
-            if (j.peek() == ',') j.fail("a point is [x, y]: found a third coordinate");
-            j.expect(']', "to close the point");
-            points.push_back({x, y});
-        } while (j.accept(','));
-        j.expect(']', "or ',' after a point");
-    }
+    detail::point_array(j, points, "points");
     if (!j.at_end()) j.fail("unexpected " + j.found() + " after the closing ']'");
     return points;
 }

@@ -57,19 +57,6 @@ std::uint64_t whole(std::size_t line, std::string_view field, const std::string&
     return v;
 }
 
-template <class T>
-std::vector<T> integer_array(detail::JsonCursor& j, std::string_view key, std::int64_t lo,
-                             std::int64_t hi) {
-    std::vector<T> v;
-    j.expect('[', "to open the array \"" + std::string(key) + "\"");
-    if (j.accept(']')) return v;
-    do {
-        v.push_back(static_cast<T>(j.integer(key, lo, hi)));
-    } while (j.accept(','));
-    j.expect(']', "or ',' in the array \"" + std::string(key) + "\"");
-    return v;
-}
-
 // The json format; `exact` (parse_triangulation_json): exidel's own layout, the four
 // keys required and nothing else.
 ProducedTriangulation parse_json(std::string_view text, std::span<const Point2> points,
@@ -108,10 +95,10 @@ ProducedTriangulation parse_json(std::string_view text, std::span<const Point2> 
         seen[k] = true;
         j.expect(':', "after the key");
         switch (k) {
-            case 0: p.triangles = integer_array<std::uint32_t>(j, key, 0, max_u32); break;
-            case 1: p.halfedges = integer_array<std::int32_t>(j, key, -1, max_i32); break;
-            case 2: p.hull = integer_array<std::uint32_t>(j, key, 0, max_u32); break;
-            case 3: p.duplicates = integer_array<std::uint32_t>(j, key, 0, max_u32); break;
+            case 0: p.triangles = detail::integer_array<std::uint32_t>(j, key, 0, max_u32); break;
+            case 1: p.halfedges = detail::integer_array<std::int32_t>(j, key, -1, max_i32); break;
+            case 2: p.hull = detail::integer_array<std::uint32_t>(j, key, 0, max_u32); break;
+            case 3: p.duplicates = detail::integer_array<std::uint32_t>(j, key, 0, max_u32); break;
             default: {
                 // delaunator's coords: must be the points the certifier is given.
                 j.expect('[', "to open the array \"coords\"");
