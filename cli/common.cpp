@@ -272,6 +272,16 @@ bool PointRun::write(std::optional<PendingFile>& output, const Writer& write,
     return true;
 }
 
+nlohmann::ordered_json& with_times(nlohmann::ordered_json& stats, const StepTimes& times,
+                                   double certify_ms) {
+    stats["read_ms"] = stats_ms(times.read);
+    stats["triangulate_ms"] = stats_ms(times.triangulate);
+    stats["certify_ms"] = stats_ms(certify_ms);
+    stats["write_ms"] = stats_ms(times.write);
+    stats["total_ms"] = stats_ms(times.total);
+    return stats;
+}
+
 double stats_ms(double ms) { return std::round(ms * 1e6) / 1e6; }
 
 std::string stats_line(const nlohmann::ordered_json& stats) {

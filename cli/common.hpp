@@ -281,6 +281,11 @@ private:
     Clock::time_point start_;
 };
 
+/// `stats` with the times of a run appended, as --stats ends: "read_ms",
+/// "triangulate_ms", "certify_ms", "write_ms", "total_ms".
+nlohmann::ordered_json& with_times(nlohmann::ordered_json& stats, const StepTimes& times,
+                                   double certify_ms);
+
 /// Milliseconds as --stats prints them: six decimals.
 double stats_ms(double ms);
 

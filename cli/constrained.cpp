@@ -34,7 +34,7 @@ void print_stats(std::ostream& err, const io::ConstraintFile& input, const Const
                    {"message", c.result.failure->message}};
     }
     const std::size_t inside = regions ? regions->inside_triangles().size() : 0;
-    const nlohmann::ordered_json stats{
+    nlohmann::ordered_json stats{
         {"points", input.points.size()},
         {"segments", input.segments.size()},
         {"holes", input.holes.size()},
@@ -50,13 +50,8 @@ void print_stats(std::ostream& err, const io::ConstraintFile& input, const Const
         {"kernel", c.kernel_name},
         {"algorithm", delaunay::to_string(o.algorithm)},
         {"failure", failure},
-        {"read_ms", stats_ms(times.read)},
-        {"triangulate_ms", stats_ms(times.triangulate)},
-        {"certify_ms", stats_ms(certify_ms)},
-        {"write_ms", stats_ms(times.write)},
-        {"total_ms", stats_ms(times.total)},
     };
-    err << stats_line(stats);
+    err << stats_line(with_times(stats, times, certify_ms));
 }
 
 }  // namespace

@@ -225,7 +225,7 @@ void print_stats(std::ostream& err, std::size_t points, const delaunay::Result& 
     const std::size_t threads =
         r.strategy == delaunay::Strategy::strips ? std::min<std::size_t>(o.threads, r.strips) : 1;
     const bool ok = r.ok();
-    const nlohmann::ordered_json stats{
+    nlohmann::ordered_json stats{
         {"points", points},
         {"vertices", ok ? points - t.duplicates.size() : 0},
         {"duplicates", t.duplicates.size()},
@@ -245,13 +245,8 @@ void print_stats(std::ostream& err, std::size_t points, const delaunay::Result& 
         {"instrumentation", "counters"},
         {"counters", counters},
         {"failure", failure},
-        {"read_ms", stats_ms(times.read)},
-        {"triangulate_ms", stats_ms(times.triangulate)},
-        {"certify_ms", stats_ms(certify_ms)},
-        {"write_ms", stats_ms(times.write)},
-        {"total_ms", stats_ms(times.total)},
     };
-    err << stats_line(stats);
+    err << stats_line(with_times(stats, times, certify_ms));
 }
 
 // Are `a` and `b` the same existing file?
