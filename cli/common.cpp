@@ -196,8 +196,7 @@ std::string_view failure_meaning(delaunay::FailureKind kind) {
             return "the finished triangulation does not close up";
         case FailureKind::invalid_segment: return "a segment names a point that does not exist";
         case FailureKind::too_many_crossings:
-            return "the rounded crossings of nearly collinear segments did not settle; the run "
-                   "stopped rather than give an output it could not certify";
+            return "more crossing points than the limit allows (max_added_points)";
         default: return "the kernel's signs contradict each other";
     }
 }

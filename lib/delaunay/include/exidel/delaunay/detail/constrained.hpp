@@ -42,9 +42,18 @@ struct ConstrainedResult;
 namespace detail {
 
 /// Thrown inside the builder and turned into ConstrainedResult::failure at its edge.
+/// `cascade`: the failure is the crossing cascade's (a run with snap rounding may succeed).
 struct ConstrainedStop {
     Failure failure;
+    bool cascade = false;
 };
+
+/// The vertices among `candidates` (indices into `points`, distinct points) whose pixels
+/// segment a -> b meets, in order from a to b. The pixel of a double point is the set of
+/// reals that round to it (to nearest, ties to even, per coordinate); exact rational
+/// arithmetic (src/snap_pixels.cpp).
+std::vector<std::uint32_t> pixels_on_segment(Point2 a, Point2 b, std::span<const Point2> points,
+                                             std::span<const std::uint32_t> candidates);
 
 template <PredicateKernel K>
 class ConstrainedBuilder {
@@ -82,7 +91,12 @@ public:
     }
 
     [[noreturn]] void stop(FailureKind kind, std::size_t index, std::string message) const {
-        throw ConstrainedStop{Failure{kind, index, no_index, std::move(message)}};
+        // The crossing cascade's failures: its own limit, and, with exact signs, anything
+        // after a cascade began (exact signs are never inconsistent otherwise).
+        const bool cascade =
+            !snapping_ &&
+            (kind == FailureKind::too_many_crossings ? natural_cap_ : K::is_exact && events_ > 0);
+        throw ConstrainedStop{Failure{kind, index, no_index, std::move(message)}, cascade};
     }
 
     /// Makes half-edges e and f twins (either may be -1: a boundary side).
@@ -877,6 +891,138 @@ public:
 
     /// Runs every segment and writes the result.
     void run(std::span<const Segment> segments, ConstrainedTriangulation& out) {
+        start(segments);
+        for (std::size_t s = 0; s < segments.size(); ++s) {
+            const std::uint32_t a = vertex_of_[segments[s].a], b = vertex_of_[segments[s].b];
+            if (a != b) insert_segment(a, b, static_cast<std::uint32_t>(s));
+        }
+        finish(segments, out);
+    }
+
+    /// Snap rounding (Hobby 1999; Guibas and Marimont 1998) on the grid of doubles, for an
+    /// input whose crossing cascade did not settle in run(). The hot pixels are those of
+    /// the segments' ends, of the input points exactly inside a segment, and of the rounded
+    /// crossing of every two input segments that cross properly: rounding to nearest maps
+    /// a point to the double whose pixel holds it, so each crossing's pixel is the one
+    /// that holds the exact crossing, as snap rounding requires. Each segment becomes the
+    /// chain of the vertices of the hot pixels it meets, in order along it (exact:
+    /// pixels_on_segment()). On a uniform grid snap-rounded chains do not cross one
+    /// another (they may share pieces and meet at vertices: Hobby's theorem); the doubles
+    /// are a uniform grid only within a binade, and a long piece that ends in a binade of
+    /// larger pixels can still cross another (found by `exidel study constrained`: nearly
+    /// parallel segments of slope 7 across y = 8). Such a leftover crossing is resolved as
+    /// in run(), a small cascade, within the same limits; a failure here is final. Every
+    /// snapped chain vertex lies in a pixel the segment meets, within two ulps of it.
+    void run_snapped(std::span<const Segment> segments, ConstrainedTriangulation& out) {
+        start(segments);
+        snapping_ = true;
+        struct Box {
+            double x0, x1, y0, y1;
+            std::uint32_t a, b, s;
+        };
+        std::vector<Box> boxes;
+        for (std::size_t s = 0; s < segments.size(); ++s) {
+            const std::uint32_t a = vertex_of_[segments[s].a], b = vertex_of_[segments[s].b];
+            if (a == b) continue;
+            const Point2 p = pts_[a], q = pts_[b];
+            boxes.push_back({std::min(p.x, q.x), std::max(p.x, q.x), std::min(p.y, q.y),
+                             std::max(p.y, q.y), a, b, static_cast<std::uint32_t>(s)});
+        }
+        std::sort(boxes.begin(), boxes.end(), [](const Box& g, const Box& h) {
+            return g.x0 < h.x0 || (g.x0 == h.x0 && g.s < h.s);
+        });
+        // Every two segments that cross properly (a sweep over x): the rounded crossing
+        // becomes a vertex, or is one already.
+        std::vector<char> hot(pts_.size(), 0);
+        std::vector<std::uint32_t> crossing_vertices;
+        {
+            std::vector<std::size_t> active;
+            for (std::size_t i = 0; i < boxes.size(); ++i) {
+                const Box& g = boxes[i];
+                std::erase_if(active, [&](std::size_t j) { return boxes[j].x1 < g.x0; });
+                for (const std::size_t j : active) {
+                    const Box& h = boxes[j];
+                    if (h.y1 < g.y0 || g.y1 < h.y0) continue;
+                    const std::array<std::uint32_t, 4> lines{h.a, h.b, g.a, g.b};
+                    if (!properly_cross(lines)) continue;
+                    const Intersection x = intersection(pts_[h.a], pts_[h.b], pts_[g.a], pts_[g.b]);
+                    if (!x.ok())
+                        stop(FailureKind::constraint_inconsistent, g.s,
+                             "the crossing of two segments cannot be rounded");
+                    crossing_vertices.push_back(insert_point(
+                        x.point, out_[g.a] / 3, {std::min(g.s, h.s), std::max(g.s, h.s)}, lines));
+                }
+                active.push_back(i);
+            }
+        }
+        hot.resize(pts_.size(), 0);
+        for (const Box& g : boxes) hot[g.a] = hot[g.b] = 1;
+        for (const std::uint32_t v : crossing_vertices) hot[v] = 1;
+        // The vertices by x, to find those near a segment.
+        std::vector<std::uint32_t> by_x;
+        for (std::uint32_t v = 0; v < pts_.size(); ++v)
+            if (vertex_of_[v] == v) by_x.push_back(v);
+        std::sort(by_x.begin(), by_x.end(),
+                  [&](std::uint32_t u, std::uint32_t v) { return lex_less(pts_[u], pts_[v]); });
+        const auto near = [&](const Box& g, double pad, const std::vector<std::uint32_t>& from,
+                              auto&& f) {
+            auto it = std::lower_bound(from.begin(), from.end(), g.x0 - pad,
+                                       [&](std::uint32_t v, double x) { return pts_[v].x < x; });
+            for (; it != from.end() && pts_[*it].x <= g.x1 + pad; ++it) {
+                const double y = pts_[*it].y;
+                if (g.y0 - pad <= y && y <= g.y1 + pad) f(*it);
+            }
+        };
+        // Input points exactly inside a segment.
+        for (const Box& g : boxes)
+            near(g, 0.0, by_x, [&](std::uint32_t v) {
+                if (!hot[v] && on_segment(g.s, v)) hot[v] = 1;
+            });
+        std::vector<std::uint32_t> hot_by_x;
+        for (const std::uint32_t v : by_x)
+            if (hot[v]) hot_by_x.push_back(v);
+        // Each segment's chain: the hot pixels it meets. A pixel is at most two ulps of its
+        // point's largest coordinate wide, so the pad below (2^-50 of the box's largest
+        // coordinate, plus a few subnormals) lets every pixel the segment meets through;
+        // the exact test decides.
+        std::vector<std::uint32_t> candidates;
+        for (const Box& g : boxes) {
+            const double m =
+                std::max({std::abs(g.x0), std::abs(g.x1), std::abs(g.y0), std::abs(g.y1)});
+            const double pad = std::ldexp(m, -50) + std::ldexp(1.0, -1070);
+            candidates.clear();
+            near(g, pad, hot_by_x, [&](std::uint32_t v) { candidates.push_back(v); });
+            const std::vector<std::uint32_t> chain =
+                pixels_on_segment(pts_[g.a], pts_[g.b], pts_, candidates);
+            if (chain.size() < 2 || chain.front() != g.a || chain.back() != g.b)
+                stop(FailureKind::constraint_inconsistent, g.s,
+                     "a snap-rounded segment does not run from its first end to its second");
+            const auto first = static_cast<std::uint32_t>(nodes_.size());
+            for (std::size_t k = 0; k < chain.size(); ++k)
+                nodes_.push_back({chain[k], k + 1 < chain.size()
+                                                ? first + static_cast<std::uint32_t>(k + 1)
+                                                : end_of_chain});
+            head_[g.s] = first;
+        }
+        // The pieces, each from its node to the next (a vertex met exactly on the way splits
+        // it, as in run()).
+        for (const Box& g : boxes) {
+            for (std::uint32_t n = head_[g.s]; nodes_[n].next != end_of_chain;) {
+                const std::uint32_t next = nodes_[n].next;
+                pending_.clear();
+                pending_.push_back({nodes_[n].vertex, after(n), g.s, n});
+                while (!pending_.empty()) {
+                    const Piece piece = pending_.back();
+                    pending_.pop_back();
+                    advance(piece);
+                }
+                n = next;
+            }
+        }
+        finish(segments, out);
+    }
+
+    void start(const std::span<const Segment>& segments) {  // segments_ points at the caller's span
         segments_ = &segments;
         // Two segments cross at most once, so exact crossings make at most s (s - 1) / 2
         // points; the allowance beyond that is for crossings of bent pieces. A run that
@@ -887,10 +1033,10 @@ public:
         natural_cap_ = pairs + 2 * m + 64 < max_added_;
         if (natural_cap_) max_added_ = pairs + 2 * m + 64;
         head_.assign(segments.size(), end_of_chain);
-        for (std::size_t s = 0; s < segments.size(); ++s) {
-            const std::uint32_t a = vertex_of_[segments[s].a], b = vertex_of_[segments[s].b];
-            if (a != b) insert_segment(a, b, static_cast<std::uint32_t>(s));
-        }
+    }
+
+    /// The chains' final fix-ups and the result.
+    void finish(std::span<const Segment> segments, ConstrainedTriangulation& out) {
         if (events_ > 0) {
             for (std::size_t s = 0; s < segments.size(); ++s)
                 cut_loops(static_cast<std::uint32_t>(s));
@@ -1065,6 +1211,7 @@ private:
     const std::span<const Segment>* segments_ = nullptr;
     std::size_t events_ = 0;
     bool natural_cap_ = false;
+    bool snapping_ = false;  ///< in run_snapped(): a failure is final
     std::set<std::array<std::uint32_t, 3>> snapped_;
     std::uint64_t rng_ = 0x9e3779b97f4a7c15ULL;
     // Scratch, reused.
