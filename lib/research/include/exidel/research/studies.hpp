@@ -436,7 +436,7 @@ enum class ConstrainedOutcome {
     certified,           ///< certify_constrained found nothing
     wrong,               ///< a result whose certificate has findings (detail: their kinds)
     failure,             ///< a typed Failure other than too_many_crossings (detail: its kind)
-    too_many_crossings,  ///< the crossing cascade did not settle (not a kernel error)
+    too_many_crossings,  ///< more crossings than max_added_points (not a kernel error)
 };
 inline constexpr std::array all_constrained_outcomes{
     ConstrainedOutcome::certified, ConstrainedOutcome::wrong, ConstrainedOutcome::failure,
