@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from . import _core
-from ._delaunay import Certificate, TriangulationError
+from ._delaunay import Certificate, TriangulationError, _TriangleArrays
 
 RULES = ("even_odd", "non_zero", "enclosed", "all")
 
@@ -29,7 +29,7 @@ def _segment_array(segments):
     return np.ascontiguousarray(s, dtype=np.int64)
 
 
-class ConstrainedDelaunay:
+class ConstrainedDelaunay(_TriangleArrays):
     """The constrained Delaunay triangulation of 2D points with segments as constraints,
     exact with an exact kernel, and the regions the segments cut it into.
 
@@ -72,8 +72,9 @@ class ConstrainedDelaunay:
     by less than an ulp at its crossings. Where rounding makes a piece meet another or pass
     through a vertex the exact segment missed (near-collinear segments within a few ulps),
     the chain is routed through that vertex, which lies within chain_tolerance (2^-44 of the
-    segment's largest coordinate) of the segment; cascades that do not settle raise
-    TriangulationError "too_many_crossings" rather than giving an uncertified result. Every
+    segment's largest coordinate) of the segment; cascades that do not settle are
+    snap-rounded instead (each segment passes through the vertices of the pixels, the reals
+    that round to a vertex, that it meets; no vertex is made but the rounded crossings). Every
     piece is an edge, every other edge is locally Delaunay (no vertex strictly inside the
     circle of the triangle across it), and the triangles tile the convex hull of all
     vertices. With an exact kernel certify() is always ok.
@@ -206,14 +207,6 @@ class ConstrainedDelaunay:
         self._neighbors = None
 
     @property
-    def npoints(self):
-        return int(self.points.shape[0])
-
-    @property
-    def nsimplex(self):
-        return int(self.simplices.shape[0])
-
-    @property
     def added_count(self):
         """The number of added crossing points, npoints - input_count."""
         return self.npoints - self.input_count
@@ -234,25 +227,6 @@ class ConstrainedDelaunay:
     def inside_simplices(self):
         """(d, 3) int32: the triangles of the domain (simplices[inside])."""
         return self.simplices[self.inside]
-
-    @property
-    def neighbors(self):
-        """(t, 3) int32: neighbors[i, j] is the triangle opposite vertex j of triangle i,
-        -1 on the hull (the neighbour across a constraint is listed like any other)."""
-        if self._neighbors is None:
-            m = self.nsimplex
-            # The edge opposite vertex j of triangle t is half-edge 3t + (j + 1) % 3.
-            e = 3 * np.arange(m, dtype=np.int64)[:, None] + np.array([1, 2, 0])
-            twin = self.halfedges[e]
-            self._neighbors = np.where(twin >= 0, twin // 3, -1).astype(np.int32)
-        return self._neighbors
-
-    @property
-    def convex_hull(self):
-        """(h, 2) int32: the hull edges, counter-clockwise; (0, 2) without triangles."""
-        if self.collinear:
-            return np.empty((0, 2), dtype=np.int32)
-        return np.stack([self.hull, np.roll(self.hull, -1)], axis=1)
 
     def certify(self, all=False):
         """The exact certificate of this result (C++ certify_constrained, adaptive kernel):

@@ -114,8 +114,7 @@ def _scale_rows(v):
 class TriangulationError(RuntimeError):
     """The algorithm stopped with a typed failure: an inexact kernel contradicted itself
     (never with an exact kernel), or, for ConstrainedDelaunay, a segment names no point
-    ("invalid_segment") or rounded crossings did not settle ("too_many_crossings", with any
-    kernel). Carries the C++ library's typed failure:
+    ("invalid_segment") or the crossings exceed max_added_points ("too_many_crossings"). Carries the C++ library's typed failure:
 
     kind         the FailureKind name ("no_visible_edge", "erosion_inconsistent", ...)
     input_index  the input point being inserted, or None
@@ -153,7 +152,39 @@ class Location:
         return np.asarray(_core.location_kinds)[self.kind]
 
 
-class Delaunay:
+class _TriangleArrays:
+    """What Delaunay and ConstrainedDelaunay derive alike from their arrays (points,
+    simplices, halfedges, hull, collinear; _neighbors caches the neighbours)."""
+
+    @property
+    def npoints(self):
+        return int(self.points.shape[0])
+
+    @property
+    def nsimplex(self):
+        return int(self.simplices.shape[0])
+
+    @property
+    def neighbors(self):
+        """(t, 3) int32: neighbors[i, j] is the triangle opposite vertex j of triangle i,
+        -1 on the hull."""
+        if self._neighbors is None:
+            m = self.nsimplex
+            # The edge opposite vertex j of triangle t is half-edge 3t + (j + 1) % 3.
+            e = 3 * np.arange(m, dtype=np.int64)[:, None] + np.array([1, 2, 0])
+            twin = self.halfedges[e]
+            self._neighbors = np.where(twin >= 0, twin // 3, -1).astype(np.int32)
+        return self._neighbors
+
+    @property
+    def convex_hull(self):
+        """(h, 2) int32: the hull edges, counter-clockwise; (0, 2) without triangles."""
+        if self.collinear:
+            return np.empty((0, 2), dtype=np.int32)
+        return np.stack([self.hull, np.roll(self.hull, -1)], axis=1)
+
+
+class Delaunay(_TriangleArrays):
     """The Delaunay triangulation of 2D points, exact with an exact kernel.
 
     Delaunay(points, kernel="adaptive", algorithm="external", incircle="determinant",
@@ -445,24 +476,6 @@ class Delaunay:
         self._mutable = None
 
     @property
-    def npoints(self):
-        return int(self.points.shape[0])
-
-    @property
-    def nsimplex(self):
-        return int(self.simplices.shape[0])
-
-    @property
-    def neighbors(self):
-        if self._neighbors is None:
-            m = self.nsimplex
-            # The edge opposite vertex j of triangle t is half-edge 3t + (j + 1) % 3.
-            e = 3 * np.arange(m, dtype=np.int64)[:, None] + np.array([1, 2, 0])
-            twin = self.halfedges[e]
-            self._neighbors = np.where(twin >= 0, twin // 3, -1).astype(np.int32)
-        return self._neighbors
-
-    @property
     def vertex_to_simplex(self):
         """(n,) int32: for each point, a triangle that has it as a vertex; -1 for a point
         that is no vertex (a duplicate: its first occurrence is the vertex, see
@@ -590,12 +603,6 @@ class Delaunay:
         eq = self.equations
         out = z @ eq[:, :3].T + eq[:, 3]
         return out.reshape(xi.shape[:-1] + (self.nsimplex,))
-
-    @property
-    def convex_hull(self):
-        if self.collinear:
-            return np.empty((0, 2), dtype=np.int32)
-        return np.stack([self.hull, np.roll(self.hull, -1)], axis=1)
 
     @property
     def coplanar(self):

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "exidel/delaunay/algorithms.hpp"
+#include "exidel/delaunay/certify.hpp"
 #include "exidel/delaunay/result.hpp"
 #include "exidel/predicates/registry.hpp"
 #include "exidel/predicates/types.hpp"
@@ -94,6 +95,30 @@ void triangulation_arrays(delaunay::Triangulation&& t, py::dict& d);
 
 /// (n, 2) float64 array of points.
 py::array_t<double> to_numpy(std::vector<Point2>&& points);
+
+/// A certificate as the dict the Python Certificate reads: ok, total_findings, findings
+/// (kind, message, triangle, points, index, other), notes, triangles.
+inline py::dict certificate_dict(const delaunay::Certificate& c, py::object notes,
+                                 std::size_t triangles) {
+    py::list findings;
+    for (const delaunay::Finding& f : c.findings) {
+        py::dict finding;
+        finding["kind"] = std::string(delaunay::to_string(f.kind));
+        finding["message"] = f.message;
+        finding["triangle"] = f.triangle;
+        finding["points"] = py::tuple(py::cast(f.points));
+        finding["index"] = f.index;
+        finding["other"] = f.other;
+        findings.append(finding);
+    }
+    py::dict d;
+    d["ok"] = c.ok();
+    d["total_findings"] = c.total_findings;
+    d["findings"] = findings;
+    d["notes"] = std::move(notes);
+    d["triangles"] = triangles;
+    return d;
+}
 
 void bind_predicates(py::module_& m);
 void bind_delaunay(py::module_& m);

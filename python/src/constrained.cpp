@@ -265,24 +265,7 @@ py::dict certify_constrained(py::object points_object, py::object segments_objec
         py::gil_scoped_release release;
         cert = delaunay::certify_constrained(input.span(), segments, c, options);
     }
-    py::list findings;
-    for (const delaunay::Finding& f : cert.findings) {
-        py::dict finding;
-        finding["kind"] = std::string(delaunay::to_string(f.kind));
-        finding["message"] = f.message;
-        finding["triangle"] = f.triangle;
-        finding["points"] = py::tuple(py::cast(f.points));
-        finding["index"] = f.index;
-        finding["other"] = f.other;
-        findings.append(finding);
-    }
-    py::dict d;
-    d["ok"] = cert.ok();
-    d["total_findings"] = cert.total_findings;
-    d["findings"] = findings;
-    d["notes"] = py::list();
-    d["triangles"] = t.triangle_count();
-    return d;
+    return certificate_dict(cert, py::list(), t.triangle_count());
 }
 
 }  // namespace

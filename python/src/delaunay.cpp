@@ -189,24 +189,7 @@ py::dict certify_produced(py::object points_object, IndexArray triangles,
             options.max_findings = static_cast<std::size_t>(-1);
         c = delaunay::certify(points.span(), t, options);
     }
-    py::list findings;
-    for (const delaunay::Finding& f : c.findings) {
-        py::dict d;
-        d["kind"] = std::string(delaunay::to_string(f.kind));
-        d["message"] = f.message;
-        d["triangle"] = f.triangle;
-        d["points"] = py::tuple(py::cast(f.points));
-        d["index"] = f.index;
-        d["other"] = f.other;
-        findings.append(d);
-    }
-    py::dict d;
-    d["ok"] = c.ok();
-    d["total_findings"] = c.total_findings;
-    d["findings"] = findings;
-    d["notes"] = normalization.notes();
-    d["triangles"] = triangle_count;
-    return d;
+    return certificate_dict(c, py::cast(normalization.notes()), triangle_count);
 }
 
 }  // namespace

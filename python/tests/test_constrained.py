@@ -464,14 +464,10 @@ def constrained_input(draw):
 @fixed(300)
 @given(constrained_input())
 def test_random_input_certifies(case):
-    pts, segs, near = case
-    try:
-        cdt = exidel.ConstrainedDelaunay(pts, segs)
-    except exidel.TriangulationError as e:
-        # The documented limit: rounded crossings among segments within a few ulps of each
-        # other that do not settle. Only the near-degenerate families come close to it.
-        assert near and e.kind == "too_many_crossings", e
-        return
+    pts, segs, _ = case
+    # Rounded crossings among segments within a few ulps of each other that do not settle
+    # are snap-rounded: every run gives a certified result.
+    cdt = exidel.ConstrainedDelaunay(pts, segs)
     cert = cdt.certify()
     assert cert.ok, cert.findings
     check_structure(cdt, pts, segs)
