@@ -35,7 +35,9 @@ struct Bound {
 
 struct Interval {
     Bound lo, hi;
-    bool empty() const { return lo.value > hi.value || (lo.value == hi.value && !(lo.closed && hi.closed)); }
+    bool empty() const {
+        return lo.value > hi.value || (lo.value == hi.value && !(lo.closed && hi.closed));
+    }
 };
 
 bool even(double x) { return (std::bit_cast<std::uint64_t>(x) & 1U) == 0; }
@@ -47,8 +49,10 @@ Interval pixel_range(double x) {
     const Rational rx(x);
     // At the largest finite magnitude, the neighbour beyond is infinity: the pixel is as
     // wide on that side as on the other (the values that still round to x, not beyond).
-    const Rational lo = std::isinf(below) ? rx - (Rational(above) - rx) / 2 : (Rational(below) + rx) / 2;
-    const Rational hi = std::isinf(above) ? rx + (rx - Rational(below)) / 2 : (Rational(above) + rx) / 2;
+    const Rational lo =
+        std::isinf(below) ? rx - (Rational(above) - rx) / 2 : (Rational(below) + rx) / 2;
+    const Rational hi =
+        std::isinf(above) ? rx + (rx - Rational(below)) / 2 : (Rational(above) + rx) / 2;
     return {{lo, even(x)}, {hi, even(x)}};
 }
 
@@ -62,7 +66,8 @@ Interval slab(double a, double b, const Interval& range) {
         if (in) return {{Rational(0), true}, {Rational(1), true}};
         return {{Rational(1), true}, {Rational(0), true}};  // empty
     }
-    Bound lo{(range.lo.value - ra) / d, range.lo.closed}, hi{(range.hi.value - ra) / d, range.hi.closed};
+    Bound lo{(range.lo.value - ra) / d, range.lo.closed},
+        hi{(range.hi.value - ra) / d, range.hi.closed};
     if (d < 0) std::swap(lo, hi);
     return {lo, hi};
 }
@@ -98,8 +103,10 @@ std::vector<std::uint32_t> pixels_on_segment(Point2 a, Point2 b, std::span<const
         {
             const double ux = p.x - a.x, uy = p.y - a.y;
             const double cross = dx * uy - dy * ux;
-            const double hx = std::ldexp(std::abs(p.x), -52) + std::numeric_limits<double>::denorm_min();
-            const double hy = std::ldexp(std::abs(p.y), -52) + std::numeric_limits<double>::denorm_min();
+            const double hx =
+                std::ldexp(std::abs(p.x), -52) + std::numeric_limits<double>::denorm_min();
+            const double hy =
+                std::ldexp(std::abs(p.y), -52) + std::numeric_limits<double>::denorm_min();
             const double reach = 2 * (hx * std::abs(dy) + hy * std::abs(dx)) +
                                  1e-14 * (std::abs(dx * uy) + std::abs(dy * ux)) +
                                  std::ldexp(1.0, -1060);
