@@ -99,7 +99,8 @@ std::vector<std::uint32_t> pixels_on_segment(Point2 a, Point2 b, std::span<const
         // half the smallest subnormal). The computed cross product is off by less than
         // 10^-14 of the sum of its terms' magnitudes (five roundings of 2^-53 each, counting
         // those of dx and dy), plus, where products underflow, a few subnormals: 2^-1060
-        // covers those; doubling the reach covers the roundings of the bound itself.
+        // covers those; doubling the reach covers the roundings of the bound itself
+        // (proofs/bounds.md#snap-pixels).
         {
             const double ux = p.x - a.x, uy = p.y - a.y;
             const double cross = dx * uy - dy * ux;
