@@ -933,7 +933,6 @@ public:
         });
         // Every two segments that cross properly (a sweep over x): the rounded crossing
         // becomes a vertex, or is one already.
-        std::vector<char> hot(pts_.size(), 0);
         std::vector<std::uint32_t> crossing_vertices;
         {
             std::vector<std::size_t> active;
@@ -955,7 +954,7 @@ public:
                 active.push_back(i);
             }
         }
-        hot.resize(pts_.size(), 0);
+        std::vector<char> hot(pts_.size(), 0);
         for (const Box& g : boxes) hot[g.a] = hot[g.b] = 1;
         for (const std::uint32_t v : crossing_vertices) hot[v] = 1;
         // The vertices by x, to find those near a segment.
