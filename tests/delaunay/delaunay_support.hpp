@@ -20,6 +20,7 @@
 #include <rapidcheck.h>
 
 #include "cgal_oracle.hpp"
+#include "instances.hpp"
 #include "exidel/delaunay/result.hpp"
 #include "exidel/testing/all.hpp"
 

@@ -21,6 +21,7 @@
 #include "delaunay_support.hpp"
 #include "exidel/delaunay/certify.hpp"
 #include "exidel/delaunay/triangulate.hpp"
+#include "exidel/predicates/dynamic.hpp"
 
 namespace {
 
@@ -496,7 +497,8 @@ TEST(DelaunayRadial, AWrongDistanceComparisonIsDetectedNotMishandled) {
     pts.push_back({0.5, 0.25});  // a second inner point, so the ring is not all ties
     Options o;
     o.strategy = Strategy::radial;
-    const Result r = triangulate(pts, ReversedDistanceKernel{}, o);
+    const ReversedDistanceKernel reversed;  // through DynamicKernel: the library's bodies
+    const Result r = triangulate(pts, DynamicKernel(reversed), o);
     // Either the run stops with a typed failure, or what it returns is certified; it
     // never returns silent garbage.
     if (r.ok()) {
