@@ -638,6 +638,27 @@ TEST(Constrained, NonDelaunayDiagonalIsKept) {
     EXPECT_FALSE(delaunay::certify(pts, r.cdt.triangulation).ok());
 }
 
+TEST(Constrained, AVertexHangingInsideOneSideIsInsertedByFlips) {
+    // In the Delaunay triangulation of these points, every triangle around (3.1, 0.34) is
+    // crossed by the segment (-10, 0)-(10, 0), and its one neighbour on the same side is
+    // (7.6, 2): it hangs inside the upper side, which would list it between two visits of
+    // that neighbour. The pseudo-polygons cannot be filled; the piece goes in by flips
+    // (found by a search over random sets with scipy's Delaunay triangulation).
+    const std::vector<Point2> pts{{-10, 0},      {10, 0},       {-3, -0.25},    {-1.57, -3.28},
+                                  {5.55, -6.01}, {3.74, -4.99}, {-1.72, -4.29}, {5.46, -1.76},
+                                  {7.6, 2},      {3.1, 0.34}};
+    const std::vector<Segment> segs{{0, 1}};
+    for (const bool exact : {false, true}) {
+        const ConstrainedResult r = exact ? run(pts, segs, GmpExactKernel{}) : run(pts, segs);
+        ASSERT_TRUE(r.ok()) << r.failure->message;
+        const delaunay::Certificate c = certify_constrained(pts, segs, r.cdt);
+        EXPECT_TRUE(c.ok()) << c.summary();
+        const Shape cgal = cgal_shape(pts, segs), ours = our_shape(r.cdt);
+        EXPECT_EQ(ours.vertices, cgal.vertices);
+        EXPECT_EQ(ours.pieces, cgal.pieces);
+    }
+}
+
 TEST(Constrained, SegmentsAreSplitAtPointsOnThemAndOverlapsMerged) {
     // (0,0)-(4,0) passes through (1,0) and (3,0); (2,0)-(6,0) overlaps it from (2,0).
     const std::vector<Point2> pts{{0, 0}, {1, 0}, {3, 0}, {4, 0}, {2, 0}, {6, 0}, {2, 3}, {2, -3}};

@@ -53,8 +53,9 @@
 //
 // How. The Delaunay triangulation of P (triangulate(), any algorithm of Options) is the
 // start. Each segment is inserted from its first end: a walk finds the edges it crosses, a
-// vertex on it ends a piece, the crossed edges are flipped away (Sloan 1993) and Lawson's
-// flips, which never flip a piece, restore the constrained Delaunay property; a piece it
+// vertex on it ends a piece, the crossed triangles are replaced by the Delaunay
+// triangulations of the two pseudo-polygons beside the piece (Anglada 1997; where a vertex
+// hangs inside one side, by Sloan's flips and Lawson's, which never flip a piece); a piece it
 // crosses is split at the rounded crossing, which is inserted as a point (a split and
 // Lawson's flips). Every loop is bounded: with an inexact kernel a run gives a result or a
 // typed Failure.

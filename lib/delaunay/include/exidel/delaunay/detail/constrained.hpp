@@ -632,7 +632,9 @@ public:
                 e = o == Sign::positive ? nxt(f) : prv(f);
             }
             carry_.push_back({s, node, none});
-            insert_by_flips(u, end, static_cast<std::int32_t>(carry_.size() - 1));
+            const auto carried_piece = static_cast<std::int32_t>(carry_.size() - 1);
+            if (!insert_by_retriangulation(u, end, carried_piece))
+                insert_by_flips(u, end, carried_piece);
             if (end != w) node = split_node(node, end);
             u = end;
         }
@@ -887,6 +889,140 @@ public:
         for (const std::uint32_t entry : fresh) queue.push_back(waiting[entry]);
         flip_queue(queue);
     }
+    /// Makes u -> v an edge, the piece of carry entry `piece`, by removing the triangles it
+    /// crosses (crossed_, in order along it; none of their edges is a piece) and filling
+    /// the two pseudo-polygons on its sides, each with the Delaunay triangulation of its
+    /// vertices (Anglada 1997): on a base edge, the apex is the vertex whose circle with
+    /// the base holds no other vertex of the polygon part over that base (one scan, each
+    /// vertex strictly inside the current circle taking its place), and the two parts on
+    /// either side of the apex are filled the same way. The triangles the segment crossed
+    /// are constrained Delaunay, so the new ones are too, and no flip follows. Returns
+    /// false, having changed nothing, when a vertex hangs inside one side (every one of its
+    /// triangles crossed: it would appear twice on its side's chain); insert_by_flips()
+    /// handles that. Slots are reused: k crossed edges free k + 1 triangles, and the two
+    /// polygons of k + 3 vertices make k + 1.
+    bool insert_by_retriangulation(std::uint32_t u, std::uint32_t v, std::int32_t piece) {
+        const std::size_t k = crossed_.size();
+        // The chains along each side, u first and v last, with the half-edge of each of
+        // their sides in a crossed triangle (inside[i] joins chain[i] and chain[i + 1];
+        // left: chain[i + 1] -> chain[i], right: chain[i] -> chain[i + 1]).
+        std::vector<std::uint32_t>& left = chain_left_;
+        std::vector<std::uint32_t>& right = chain_right_;
+        std::vector<std::int32_t>& inside_left = inside_left_;
+        std::vector<std::int32_t>& inside_right = inside_right_;
+        left.assign(1, u);
+        right.assign(1, u);
+        inside_left.clear();
+        inside_right.clear();
+        if (side_.size() < pts_.size()) side_.resize(pts_.size(), 0);
+        ++side_stamp_;
+        const std::uint64_t mark = side_stamp_ << 1;
+        const auto append = [&](std::vector<std::uint32_t>& chain, std::uint32_t x) {
+            if (side_[x] == mark) return false;  // seen before on this walk: a hanging vertex
+            side_[x] = mark;
+            chain.push_back(x);
+            return true;
+        };
+        side_[u] = mark;
+        const std::int32_t e0 = crossed_.front();
+        if (!append(left, to(e0)) || !append(right, from(e0))) return false;
+        inside_left.push_back(nxt(e0));
+        inside_right.push_back(prv(e0));
+        for (std::size_t i = 0; i < k; ++i) {
+            const std::int32_t f = twin(crossed_[i]);
+            if (i + 1 == k) break;
+            const std::int32_t next = crossed_[i + 1];
+            if (next == nxt(f)) {  // the triangle's third vertex is on the left
+                if (!append(left, to(next))) return false;
+                inside_left.push_back(prv(f));
+            } else {
+                if (!append(right, from(next))) return false;
+                inside_right.push_back(nxt(f));
+            }
+        }
+        const std::int32_t last = twin(crossed_.back());
+        if (side_[v] == mark) return false;
+        left.push_back(v);
+        right.push_back(v);
+        inside_left.push_back(prv(last));
+        inside_right.push_back(nxt(last));
+        // The cavity's slots and its sides' outer twins and pieces, before any is rewritten.
+        std::vector<std::int32_t>& slots = cavity_slots_;
+        slots.clear();
+        slots.push_back(e0 / 3);
+        for (const std::int32_t e : crossed_) slots.push_back(twin(e) / 3);
+        std::vector<std::array<std::int32_t, 2>>& outer_left = outer_left_;
+        std::vector<std::array<std::int32_t, 2>>& outer_right = outer_right_;
+        outer_left.clear();
+        outer_right.clear();
+        for (const std::int32_t h : inside_left) outer_left.push_back({twin(h), seg(h)});
+        for (const std::int32_t h : inside_right) outer_right.push_back({twin(h), seg(h)});
+        // Fill each side: a stack of (i, j, the half-edge across base chain[i] - chain[j]).
+        std::size_t next_slot = 0;
+        const std::int32_t base_left = fill_side(left, outer_left, true, none, piece, next_slot);
+        fill_side(right, outer_right, false, base_left, piece, next_slot);
+        return true;
+    }
+
+    /// A part of a pseudo-polygon to fill: chain[i..j] over base chain[i] - chain[j], and
+    /// the half-edge across that base (none: not written yet).
+    struct FillPart {
+        std::uint32_t i, j;
+        std::int32_t across;
+    };
+    /// Fills one side of insert_by_retriangulation(): `chain` runs from the piece's u to
+    /// its v, on the left of u -> v (`is_left`) or on its right; `outer` holds, for each
+    /// side chain[i] - chain[i + 1], its outer twin and pieces. `across` is the half-edge
+    /// the base u - v pairs with (none for the first side filled). Returns the base's
+    /// half-edge.
+    std::int32_t fill_side(const std::vector<std::uint32_t>& chain,
+                           const std::vector<std::array<std::int32_t, 2>>& outer, bool is_left,
+                           std::int32_t across, std::int32_t piece, std::size_t& next_slot) {
+        std::vector<FillPart>& parts = fill_parts_;
+        parts.clear();
+        parts.push_back({0, static_cast<std::uint32_t>(chain.size() - 1), across});
+        std::int32_t base = none;
+        while (!parts.empty()) {
+            const FillPart p = parts.back();
+            parts.pop_back();
+            // The triangle over base chain[i] - chain[j] is counter-clockwise as (i, j, c) on
+            // the left, (j, i, c) on the right.
+            const std::uint32_t a = chain[is_left ? p.i : p.j], b = chain[is_left ? p.j : p.i];
+            std::uint32_t c = p.i + 1;
+            for (std::uint32_t m = p.i + 2; m < p.j; ++m) {
+                if (k_.incircle(pts_[a], pts_[b], pts_[chain[c]], pts_[chain[m]]) == Sign::positive)
+                    c = m;
+            }
+            if (next_slot >= cavity_slots_.size())
+                stop(FailureKind::constraint_inconsistent, a,
+                     "refilling the triangles a segment crosses needs more of them");
+            const std::int32_t t = cavity_slots_[next_slot++];
+            // Half-edges 3t: a -> b (the base), 3t + 1: b -> chain[c], 3t + 2: chain[c] -> a.
+            // On the left b -> c joins (c, j) and c -> a joins (i, c); on the right b -> c
+            // joins (i, c) and c -> a joins (c, j).
+            const std::array<std::uint32_t, 2> first =
+                is_left ? std::array{c, p.j} : std::array{p.i, c};
+            const std::array<std::uint32_t, 2> second =
+                is_left ? std::array{p.i, c} : std::array{c, p.j};
+            std::array<std::int32_t, 3> segs{p.i == 0 && p.j + 1 == chain.size() ? piece : none,
+                                             none, none};
+            std::array<std::int32_t, 3> twins{p.across, none, none};
+            const std::array<std::array<std::uint32_t, 2>, 2> sides{first, second};
+            for (int s = 0; s < 2; ++s) {
+                const auto [x, y] = sides[static_cast<std::size_t>(s)];
+                if (y == x + 1) {  // a side of the chain
+                    twins[static_cast<std::size_t>(s + 1)] = outer[x][0];
+                    segs[static_cast<std::size_t>(s + 1)] = outer[x][1];
+                } else {
+                    parts.push_back({x, y, 3 * t + 1 + s});
+                }
+            }
+            write(t, {a, b, chain[c]}, segs, twins);
+            if (base == none) base = 3 * t;  // the first part is the whole side
+        }
+        return base;
+    }
+
     // ---- the result ------------------------------------------------------------------------
 
     /// Runs every segment and writes the result.
@@ -1220,6 +1356,10 @@ private:
     std::vector<std::uint64_t> side_;  ///< per vertex: 2 stamp + 1 left of it, 2 stamp right
     std::uint64_t side_stamp_ = 0;     ///< one per piece inserted by flips (never wraps)
     std::vector<std::uint32_t> crossing_entries_, fresh_entries_;
+    std::vector<std::uint32_t> chain_left_, chain_right_;
+    std::vector<std::int32_t> inside_left_, inside_right_, cavity_slots_;
+    std::vector<std::array<std::int32_t, 2>> outer_left_, outer_right_;
+    std::vector<FillPart> fill_parts_;
 };
 
 }  // namespace detail
