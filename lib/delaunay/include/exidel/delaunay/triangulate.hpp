@@ -118,17 +118,6 @@ inline constexpr bool cosine_runs_dynamic =
 /// triangulate's body, for every kernel.
 template <Instrumentation I, PredicateKernel K>
 Result triangulate_with(std::span<const Point2> points, const K& kernel, const Options& options) {
-    if constexpr (cosine_runs_dynamic<K, I>) {
-        if (options.incircle == InCirclePolicy::cosine) {
-            // DynamicKernel's bodies are the counted ones (see triangulate), called through
-            // their declared instantiation (end of this file), so that a kernel of the
-            // caller's own does not compile them again.
-            Result r =
-                triangulate<Instrumentation::counters>(points, DynamicKernel(kernel), options);
-            if constexpr (I == Instrumentation::off) r.counters = Counters{};
-            return r;
-        }
-    }
     detail::SortedInput input;
     if (auto failure = detail::sort_and_dedupe(points, input, options.threads)) {
         Result r;
@@ -136,9 +125,17 @@ Result triangulate_with(std::span<const Point2> points, const K& kernel, const O
         r.failure = std::move(failure);
         return r;
     }
-    if constexpr (!cosine_runs_dynamic<K, I>) {
-        if (options.incircle == InCirclePolicy::cosine)
+    if (options.incircle == InCirclePolicy::cosine) {
+        if constexpr (cosine_runs_dynamic<K, I>) {
+            // DynamicKernel's bodies are the counted ones (see triangulate).
+            Result r = detail::run_algorithm<DynamicKernel, Instrumentation::counters,
+                                             InCirclePolicy::cosine>(DynamicKernel(kernel), input,
+                                                                     options);
+            if constexpr (I == Instrumentation::off) r.counters = Counters{};
+            return r;
+        } else {
             return detail::run_algorithm<K, I, InCirclePolicy::cosine>(kernel, input, options);
+        }
     }
     return detail::run_algorithm<K, I, InCirclePolicy::determinant>(kernel, input, options);
 }
