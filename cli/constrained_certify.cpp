@@ -98,6 +98,89 @@ bool within(Point2 p, Point2 a, Point2 b) {
     return compare_segment_distance(p, a, b, delaunay::chain_tolerance(a, b)) != Sign::positive;
 }
 
+// The vertices that may lie on a segment, for deriving a peer's chains: a uniform grid of
+// about one vertex per cell over the vertices' bounding box, walked column by column
+// along the segment, so a segment costs the cells it passes through rather than every
+// vertex in its x-range (quadratic for long segments). A candidate list only: the exact
+// tests decide. It misses no vertex within `tol` of the segment (in each coordinate:
+// chain_tolerance() bounds the Euclidean distance): each column is widened by a whole
+// column on either side and then by 2 tol, the segment's y over that x-range is widened
+// by 2 tol and a whole row, and the rounding of those few operations (a few ulps of the
+// largest coordinate) is far below tol (2^-44 of it, or 256 subnormal ulps). An input
+// whose extent overflows gets one cell (every vertex a candidate, as a scan).
+class VertexGrid {
+public:
+    VertexGrid(const std::vector<Point2>& points, const std::vector<std::uint32_t>& vertices) {
+        for (const std::uint32_t v : vertices) {
+            const Point2 p = points[v];
+            x0_ = std::min(x0_, p.x), x1_ = std::max(x1_, p.x);
+            y0_ = std::min(y0_, p.y), y1_ = std::max(y1_, p.y);
+        }
+        const double wx = x1_ - x0_, wy = y1_ - y0_;
+        if (!vertices.empty() && std::isfinite(wx) && std::isfinite(wy)) {
+            const double side = std::ceil(std::sqrt(static_cast<double>(vertices.size())));
+            nx_ = wx > 0 ? static_cast<std::size_t>(side) : 1;
+            ny_ = wy > 0 ? static_cast<std::size_t>(side) : 1;
+            cw_ = wx / static_cast<double>(nx_);
+            ch_ = wy / static_cast<double>(ny_);
+        }
+        start_.assign(nx_ * ny_ + 1, 0);
+        for (const std::uint32_t v : vertices) ++start_[cell(points[v]) + 1];
+        for (std::size_t c = 0; c < nx_ * ny_; ++c) start_[c + 1] += start_[c];
+        items_.resize(vertices.size());
+        std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
+        for (const std::uint32_t v : vertices) items_[fill[cell(points[v])]++] = v;
+    }
+
+    /// Calls f(v) once for every vertex v that may lie within `tol` of segment a-b.
+    template <class F>
+    void near_segment(Point2 a, Point2 b, double tol, F&& f) const {
+        const double xlo = std::min(a.x, b.x) - 2 * tol, xhi = std::max(a.x, b.x) + 2 * tol;
+        const std::size_t c0 = column(xlo), c1 = column(xhi);
+        for (std::size_t c = c0 > 0 ? c0 - 1 : 0; c <= std::min(c1 + 1, nx_ - 1); ++c) {
+            std::size_t r0 = 0, r1 = ny_ - 1;
+            if (a.x != b.x && ny_ > 1) {
+                // The segment's y over the column (widened), a whole row more either side.
+                const double lo = std::max(xlo, x0_ + (static_cast<double>(c) - 1) * cw_ - 2 * tol);
+                const double hi = std::min(xhi, x0_ + (static_cast<double>(c) + 2) * cw_ + 2 * tol);
+                const double slope = (b.y - a.y) / (b.x - a.x);
+                const auto y_at = [&](double x) {
+                    return a.y +
+                           (std::clamp(x, std::min(a.x, b.x), std::max(a.x, b.x)) - a.x) * slope;
+                };
+                const double ya = y_at(lo), yb = y_at(hi);
+                const std::size_t ra = row(std::min(ya, yb) - 2 * tol),
+                                  rb = row(std::max(ya, yb) + 2 * tol);
+                r0 = ra > 0 ? ra - 1 : 0;
+                r1 = std::min(rb + 1, ny_ - 1);
+            } else if (ny_ > 1) {
+                r0 = row(std::min(a.y, b.y) - 2 * tol);
+                r0 = r0 > 0 ? r0 - 1 : 0;
+                r1 = std::min(row(std::max(a.y, b.y) + 2 * tol) + 1, ny_ - 1);
+            }
+            for (std::size_t r = r0; r <= r1; ++r) {
+                const std::size_t k = r * nx_ + c;
+                for (std::uint32_t i = start_[k]; i < start_[k + 1]; ++i) f(items_[i]);
+            }
+        }
+    }
+
+private:
+    static std::size_t index(double t, double origin, double width, std::size_t count) {
+        if (count == 1 || !(t > origin)) return 0;  // also NaN, which no finite input makes
+        const double i = (t - origin) / width;
+        return i >= static_cast<double>(count - 1) ? count - 1 : static_cast<std::size_t>(i);
+    }
+    std::size_t column(double x) const { return index(x, x0_, cw_, nx_); }
+    std::size_t row(double y) const { return index(y, y0_, ch_, ny_); }
+    std::size_t cell(Point2 p) const { return row(p.y) * nx_ + column(p.x); }
+
+    double x0_ = std::numeric_limits<double>::infinity(), x1_ = -x0_, y0_ = x0_, y1_ = -x0_;
+    double cw_ = 0, ch_ = 0;
+    std::size_t nx_ = 1, ny_ = 1;
+    std::vector<std::uint32_t> start_, items_;
+};
+
 // Everything the certification needs, rebuilt from the two files.
 class Rebuild {
 public:
@@ -222,13 +305,11 @@ private:
     void build_chains() {
         const std::size_t n = input_.points.size();
         const std::vector<std::uint32_t>& first = domain_.vertex_of_input;
-        std::vector<std::uint32_t> by_x;  // the distinct vertices, by x
+        std::vector<std::uint32_t> distinct;
         for (std::size_t i = 0; i < cdt.points.size(); ++i) {
-            if (first[i] == i) by_x.push_back(static_cast<std::uint32_t>(i));
+            if (first[i] == i) distinct.push_back(static_cast<std::uint32_t>(i));
         }
-        std::sort(by_x.begin(), by_x.end(), [&](std::uint32_t i, std::uint32_t j) {
-            return cdt.points[i].x < cdt.points[j].x;
-        });
+        const VertexGrid grid(cdt.points, distinct);
         cdt.chain_offsets.assign(1, 0);
         std::vector<std::uint32_t> inner;
         for (const delaunay::Segment& seg : segments_) {
@@ -241,18 +322,15 @@ private:
             if (fa != fb) {
                 const Point2 a = cdt.points[fa], b = cdt.points[fb];
                 const double tol = delaunay::chain_tolerance(a, b);
-                const double lo = std::min(a.x, b.x) - 2 * tol, hi = std::max(a.x, b.x) + 2 * tol;
+                const double xlo = std::min(a.x, b.x) - 2 * tol, xhi = std::max(a.x, b.x) + 2 * tol;
                 const double ylo = std::min(a.y, b.y) - 2 * tol, yhi = std::max(a.y, b.y) + 2 * tol;
                 inner.clear();
-                auto it = std::lower_bound(
-                    by_x.begin(), by_x.end(), lo,
-                    [&](std::uint32_t i, double x) { return cdt.points[i].x < x; });
-                for (; it != by_x.end() && cdt.points[*it].x <= hi; ++it) {
-                    const std::uint32_t v = *it;
+                grid.near_segment(a, b, tol, [&](std::uint32_t v) {
                     const Point2 p = cdt.points[v];
-                    if (v == fa || v == fb || p.y < ylo || p.y > yhi) continue;
+                    if (v == fa || v == fb || p.x < xlo || p.x > xhi || p.y < ylo || p.y > yhi)
+                        return;
                     if (v < n ? on_open_segment(a, b, p) : within(p, a, b)) inner.push_back(v);
-                }
+                });
                 // Along the segment: by the coordinate that changes most, then the other.
                 const bool by_x_axis = std::abs(b.x - a.x) >= std::abs(b.y - a.y);
                 const double sx = b.x >= a.x ? 1 : -1, sy = b.y >= a.y ? 1 : -1;

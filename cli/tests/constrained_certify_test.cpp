@@ -10,6 +10,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 
 #include "run_binary.hpp"
 
@@ -135,6 +136,51 @@ TEST(ExidelCertifyConstrained, WholeHullWithoutHoles) {
     EXPECT_TRUE(has(wrong.out, "outside the domain under fill rule even-odd")) << wrong.out;
     // --fill any accepts any union of regions.
     EXPECT_EQ(certify("--constraints '" + in + "' '" + out + "' --fill any").status, 0);
+}
+
+// A peer's chains are derived from the geometry (a grid of the vertices walked along each
+// segment): every lattice point exactly on a long row, column or diagonal, and every
+// crossing of the slanted segments with them, must be found, or the OFF (which has no
+// chains) would not certify. Also lattices one cell wide, where the grid has one column
+// or one row.
+TEST(ExidelCertifyConstrained, ChainsThroughManyVerticesAreDerivedForAPeersOff) {
+    const auto lattice = [](int nx, int ny) {
+        json in;
+        in["points"] = json::array();
+        for (int y = 0; y <= ny; ++y) {
+            for (int x = 0; x <= nx; ++x) in["points"].push_back({x, y});
+        }
+        const auto id = [&](int x, int y) { return y * (nx + 1) + x; };
+        in["segments"] = json::array();
+        for (int y = 0; y <= ny; y += 3) in["segments"].push_back({id(0, y), id(nx, y)});
+        for (int x = 0; x <= nx; x += 4) in["segments"].push_back({id(x, 0), id(x, ny)});
+        in["segments"].push_back({id(0, 0), id(nx, ny)});
+        if (nx > 1 && ny > 1) {
+            // Slanted ends off the lattice: they cross rows, columns and the diagonal.
+            const std::size_t k = in["points"].size();
+            in["points"].push_back({0.5, 0.25});
+            in["points"].push_back({nx - 0.5, ny - 1.25});
+            in["points"].push_back({0.25, ny - 0.5});
+            in["points"].push_back({nx - 0.75, 0.5});
+            in["segments"].push_back({k, k + 1});
+            in["segments"].push_back({k + 2, k + 3});
+        }
+        return in;
+    };
+    for (const auto& [nx, ny] : {std::pair{30, 24}, std::pair{1, 40}, std::pair{40, 1}}) {
+        const std::string name = "ccert_lattice_" + std::to_string(nx) + "x" + std::to_string(ny);
+        const std::string in = write_json(name + ".json", lattice(nx, ny));
+        const std::string off = work_path(name + ".off");
+        ASSERT_EQ(
+            exidel("triangulate --constraints '" + in + "' --fill all -q -o '" + off + "'").status,
+            0);
+        const RunResult r = certify("--constraints '" + in + "' '" + off + "' --fill all");
+        EXPECT_EQ(r.status, 0) << name << "\n" << r.out << r.err;
+        EXPECT_TRUE(has(r.out, "certified: the constrained Delaunay triangulation of")) << r.out;
+        if (nx > 1 && ny > 1) {
+            EXPECT_FALSE(has(r.out, "(0 added points)")) << r.out;
+        }
+    }
 }
 
 TEST(ExidelCertifyConstrained, WrongFillRuleIsADomainMismatch) {

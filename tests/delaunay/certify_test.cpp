@@ -314,6 +314,31 @@ TEST(Normalize, DelaunatorScipyAndTriangleLayoutsCertify) {
     EXPECT_TRUE(strict.has(FindingKind::duplicate_vertex)) << strict.summary();
 }
 
+// Twins derived from triangles alone pair a -> b with b -> a when each runs exactly once,
+// in two different triangles; anything else (a repeated half-edge, a triangle with a
+// repeated vertex) gets none. Against that rule written out directly, on small soups of
+// triangles over six vertices, where repeats are common.
+RC_GTEST_PROP(Normalize, DerivedTwinsAreTheUniqueReversedHalfEdges, ()) {
+    const auto pts = uniform(6, 5);
+    const std::size_t k = *rc::gen::inRange<std::size_t>(1, 12);
+    ProducedTriangulation p;
+    p.triangles = *rc::gen::container<std::vector<std::uint32_t>>(3 * k, rc::gen::inRange(0u, 6u));
+    const std::vector<std::uint32_t> T = p.triangles;
+    const Triangulation t = normalize(pts, std::move(p), nullptr, true);
+    const auto head = [&](std::size_t e) { return T[next_halfedge(e)]; };
+    std::vector<std::int32_t> expected(T.size(), -1);
+    for (std::size_t e = 0; e < T.size(); ++e) {
+        std::size_t same = 0, reversed = 0, twin = 0;
+        for (std::size_t f = 0; f < T.size(); ++f) {
+            same += T[f] == T[e] && head(f) == head(e);
+            if (T[f] == head(e) && head(f) == T[e]) ++reversed, twin = f;
+        }
+        if (same == 1 && reversed == 1 && twin / 3 != e / 3 && T[e] != head(e))
+            expected[e] = static_cast<std::int32_t>(twin);
+    }
+    RC_ASSERT(t.halfedges == expected);
+}
+
 TEST(Normalize, CollinearChainInEitherDirection) {
     const std::vector<Point2> line{{2, 2}, {0, 0}, {1, 1}, {0, 0}};
     ProducedTriangulation p;

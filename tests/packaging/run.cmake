@@ -5,6 +5,8 @@
 # install:      build exidel, install it into WORK_DIR/prefix, check the installed layout,
 #               then build and run the consumer with find_package(exidel 0.1 REQUIRED); also
 #               check that a consumer asking for an incompatible version (1.0) is refused.
+#               With -DBUILD_DIR=<a built exidel tree>, exidel is not built again: that
+#               tree is installed (`cmake --install`) and checked the same way.
 # subdirectory: build and run the same consumer with add_subdirectory(<exidel source>).
 cmake_minimum_required(VERSION 3.25)
 
@@ -14,14 +16,21 @@ fresh_work_dir(run.cmake MODE EXIDEL_SOURCE_DIR CONSUMER_SOURCE_DIR WORK_DIR CMA
 
 if(MODE STREQUAL "install")
   set(prefix ${WORK_DIR}/prefix)
-  run("configure exidel" ${CMAKE_COMMAND} -S ${EXIDEL_SOURCE_DIR} -B ${WORK_DIR}/exidel
-      ${common_args} -DEXIDEL_BUILD_TESTS=OFF -DEXIDEL_BUILD_CLI=OFF
-      -DEXIDEL_BUILD_BENCH=OFF -DEXIDEL_BUILD_PYTHON=OFF -DEXIDEL_INSTALL=ON)
-  # Only the libraries the package installs: exidel::research (not installed) takes most
-  # of a full build's time here, and the main build compiles it anyway.
-  run("build exidel" ${CMAKE_COMMAND} --build ${WORK_DIR}/exidel
-      --target exidel_predicates exidel_delaunay exidel_io)
-  run("install exidel" ${CMAKE_COMMAND} --install ${WORK_DIR}/exidel --prefix ${prefix})
+  if(DEFINED BUILD_DIR)
+    # The tree ctest runs in, built already: its install rules and exported targets are
+    # the ones a user's `cmake --install build` runs.
+    run("install exidel from ${BUILD_DIR}" ${CMAKE_COMMAND} --install ${BUILD_DIR}
+        --prefix ${prefix})
+  else()
+    run("configure exidel" ${CMAKE_COMMAND} -S ${EXIDEL_SOURCE_DIR} -B ${WORK_DIR}/exidel
+        ${common_args} -DEXIDEL_BUILD_TESTS=OFF -DEXIDEL_BUILD_CLI=OFF
+        -DEXIDEL_BUILD_BENCH=OFF -DEXIDEL_BUILD_PYTHON=OFF -DEXIDEL_INSTALL=ON)
+    # Only the libraries the package installs: exidel::research (not installed) takes most
+    # of a full build's time here, and the main build compiles it anyway.
+    run("build exidel" ${CMAKE_COMMAND} --build ${WORK_DIR}/exidel
+        --target exidel_predicates exidel_delaunay exidel_io)
+    run("install exidel" ${CMAKE_COMMAND} --install ${WORK_DIR}/exidel --prefix ${prefix})
+  endif()
 
   # The layout consumers and packagers rely on.
   set(cmakedir ${prefix}/lib/cmake/exidel)

@@ -62,24 +62,36 @@ std::vector<std::uint32_t> first_occurrences(std::span<const Point2> p,
     return first;
 }
 
-// Twins by matching reversed edges: a -> b with b -> a, when each runs exactly once.
+// Twins by matching reversed edges: a -> b with b -> a, when each runs exactly once (and
+// in two different triangles). The half-edges sorted by their undirected edge, then by
+// direction, put the two of an edge next to each other: one sort, no hashing (a hash
+// map of every half-edge was most of certifying a peer's 2 * 10^6 triangles).
 std::vector<std::int32_t> match_twins(const std::vector<std::uint32_t>& T) {
     const std::size_t n = T.size() - T.size() % 3;
     std::vector<std::int32_t> H(T.size(), -1);
-    const auto key = [](std::uint64_t a, std::uint64_t b) { return a << 32 | b; };
-    std::unordered_map<std::uint64_t, std::int64_t> edge;  // -> half-edge, or -1 if repeated
-    edge.reserve(n);
+    struct Entry {
+        std::uint64_t edge;  // min << 32 | max
+        std::uint32_t e;
+        bool forward;  // runs min -> max
+    };
+    std::vector<Entry> entries(n);
     for (std::size_t e = 0; e < n; ++e) {
-        const auto [it, fresh] =
-            edge.emplace(key(T[e], T[next_halfedge(e)]), static_cast<std::int64_t>(e));
-        if (!fresh) it->second = -1;
+        const std::uint64_t a = T[e], b = T[next_halfedge(e)];
+        entries[e] = {std::min(a, b) << 32 | std::max(a, b), static_cast<std::uint32_t>(e), a < b};
     }
-    for (std::size_t e = 0; e < n; ++e) {
-        const auto mine = edge.find(key(T[e], T[next_halfedge(e)]));
-        const auto twin = edge.find(key(T[next_halfedge(e)], T[e]));
-        if (mine->second < 0 || twin == edge.end() || twin->second < 0) continue;
-        if (static_cast<std::size_t>(twin->second) / 3 == e / 3) continue;
-        H[e] = static_cast<std::int32_t>(twin->second);
+    std::sort(entries.begin(), entries.end(), [](const Entry& x, const Entry& y) {
+        return x.edge != y.edge ? x.edge < y.edge : x.forward < y.forward;
+    });
+    for (std::size_t i = 0; i < n;) {
+        std::size_t j = i;
+        while (j < n && entries[j].edge == entries[i].edge) ++j;
+        // Exactly one backward and one forward half-edge, in different triangles.
+        if (j - i == 2 && !entries[i].forward && entries[i + 1].forward &&
+            entries[i].e / 3 != entries[i + 1].e / 3) {
+            H[entries[i].e] = static_cast<std::int32_t>(entries[i + 1].e);
+            H[entries[i + 1].e] = static_cast<std::int32_t>(entries[i].e);
+        }
+        i = j;
     }
     return H;
 }

@@ -928,9 +928,8 @@ public:
         if (!append(left, to(e0)) || !append(right, from(e0))) return false;
         inside_left.push_back(nxt(e0));
         inside_right.push_back(prv(e0));
-        for (std::size_t i = 0; i < k; ++i) {
+        for (std::size_t i = 0; i + 1 < k; ++i) {
             const std::int32_t f = twin(crossed_[i]);
-            if (i + 1 == k) break;
             const std::int32_t next = crossed_[i + 1];
             if (next == nxt(f)) {  // the triangle's third vertex is on the left
                 if (!append(left, to(next))) return false;
@@ -1000,14 +999,12 @@ public:
             // Half-edges 3t: a -> b (the base), 3t + 1: b -> chain[c], 3t + 2: chain[c] -> a.
             // On the left b -> c joins (c, j) and c -> a joins (i, c); on the right b -> c
             // joins (i, c) and c -> a joins (c, j).
-            const std::array<std::uint32_t, 2> first =
-                is_left ? std::array{c, p.j} : std::array{p.i, c};
-            const std::array<std::uint32_t, 2> second =
-                is_left ? std::array{p.i, c} : std::array{c, p.j};
+            using Range = std::array<std::uint32_t, 2>;
+            const std::array<Range, 2> sides = is_left ? std::array{Range{c, p.j}, Range{p.i, c}}
+                                                       : std::array{Range{p.i, c}, Range{c, p.j}};
             std::array<std::int32_t, 3> segs{p.i == 0 && p.j + 1 == chain.size() ? piece : none,
                                              none, none};
             std::array<std::int32_t, 3> twins{p.across, none, none};
-            const std::array<std::array<std::uint32_t, 2>, 2> sides{first, second};
             for (int s = 0; s < 2; ++s) {
                 const auto [x, y] = sides[static_cast<std::size_t>(s)];
                 if (y == x + 1) {  // a side of the chain
