@@ -139,24 +139,29 @@ public:
         const std::size_t c0 = column(xlo), c1 = column(xhi);
         for (std::size_t c = c0 > 0 ? c0 - 1 : 0; c <= std::min(c1 + 1, nx_ - 1); ++c) {
             std::size_t r0 = 0, r1 = ny_ - 1;
-            if (a.x != b.x && ny_ > 1) {
-                // The segment's y over the column (widened), a whole row more either side.
-                const double lo = std::max(xlo, x0_ + (static_cast<double>(c) - 1) * cw_ - 2 * tol);
-                const double hi = std::min(xhi, x0_ + (static_cast<double>(c) + 2) * cw_ + 2 * tol);
-                const double slope = (b.y - a.y) / (b.x - a.x);
-                const auto y_at = [&](double x) {
-                    return a.y +
-                           (std::clamp(x, std::min(a.x, b.x), std::max(a.x, b.x)) - a.x) * slope;
-                };
-                const double ya = y_at(lo), yb = y_at(hi);
-                const std::size_t ra = row(std::min(ya, yb) - 2 * tol),
-                                  rb = row(std::max(ya, yb) + 2 * tol);
-                r0 = ra > 0 ? ra - 1 : 0;
-                r1 = std::min(rb + 1, ny_ - 1);
-            } else if (ny_ > 1) {
-                r0 = row(std::min(a.y, b.y) - 2 * tol);
+            if (ny_ > 1) {
+                // The segment's y over the column (widened), a whole row more either side;
+                // its whole y-range when it is vertical, or so steep that its slope or a
+                // y is no finite double (a width of a few subnormals).
+                double ymin = std::min(a.y, b.y), ymax = std::max(a.y, b.y);
+                if (a.x != b.x) {
+                    const double cl = static_cast<double>(c);
+                    const double lo = std::max(xlo, x0_ + (cl - 1) * cw_ - 2 * tol);
+                    const double hi = std::min(xhi, x0_ + (cl + 2) * cw_ + 2 * tol);
+                    const double slope = (b.y - a.y) / (b.x - a.x);
+                    const auto y_at = [&](double x) {
+                        return a.y + (std::clamp(x, std::min(a.x, b.x), std::max(a.x, b.x)) - a.x) *
+                                         slope;
+                    };
+                    const double ya = y_at(lo), yb = y_at(hi);
+                    if (std::isfinite(ya) && std::isfinite(yb)) {
+                        ymin = std::min(ya, yb);
+                        ymax = std::max(ya, yb);
+                    }
+                }
+                r0 = row(ymin - 2 * tol);
                 r0 = r0 > 0 ? r0 - 1 : 0;
-                r1 = std::min(row(std::max(a.y, b.y) + 2 * tol) + 1, ny_ - 1);
+                r1 = std::min(row(ymax + 2 * tol) + 1, ny_ - 1);
             }
             for (std::size_t r = r0; r <= r1; ++r) {
                 const std::size_t k = r * nx_ + c;

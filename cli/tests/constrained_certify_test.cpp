@@ -183,6 +183,25 @@ TEST(ExidelCertifyConstrained, ChainsThroughManyVerticesAreDerivedForAPeersOff) 
     }
 }
 
+// A segment only a subnormal wide and 20 high: its slope is no double. Its crossing with
+// a horizontal segment at y = 15 is an added point its chain must hold; the far points
+// make the grid several rows high, so a walk that lost the steep segment's rows would
+// miss it.
+TEST(ExidelCertifyConstrained, ChainOfASegmentTooSteepForItsSlopeIsDerived) {
+    json in;
+    in["points"] = json::array({{0.0, 0.0}, {5e-324, 20.0}, {-1.0, 15.0}, {1.0, 15.0}});
+    for (int k = 0; k <= 20; ++k) in["points"].push_back({10.0, static_cast<double>(k)});
+    in["segments"] = json::array({{0, 1}, {2, 3}});
+    const std::string file = write_json("ccert_steep.json", in);
+    const std::string off = work_path("ccert_steep.off");
+    ASSERT_EQ(
+        exidel("triangulate --constraints '" + file + "' --fill all -q -o '" + off + "'").status,
+        0);
+    const RunResult r = certify("--constraints '" + file + "' '" + off + "' --fill all");
+    EXPECT_EQ(r.status, 0) << r.out << r.err;
+    EXPECT_TRUE(has(r.out, "(1 added points)")) << r.out;
+}
+
 TEST(ExidelCertifyConstrained, WrongFillRuleIsADomainMismatch) {
     const Outputs& o = outputs();
     // The enclosed output lacks the triangle between the square and the outside point.
