@@ -118,9 +118,12 @@ public:
         }
         const double wx = x1_ - x0_, wy = y1_ - y0_;
         if (!vertices.empty() && std::isfinite(wx) && std::isfinite(wy)) {
-            const double side = std::ceil(std::sqrt(static_cast<double>(vertices.size())));
-            nx_ = wx > 0 ? static_cast<std::size_t>(side) : 1;
-            ny_ = wy > 0 ? static_cast<std::size_t>(side) : 1;
+            // side x side cells, or a single row or column of one per vertex when the
+            // vertices lie on a horizontal or vertical line.
+            const std::size_t side = static_cast<std::size_t>(
+                std::ceil(std::sqrt(static_cast<double>(vertices.size()))));
+            nx_ = wx > 0 ? (wy > 0 ? side : vertices.size()) : 1;
+            ny_ = wy > 0 ? (wx > 0 ? side : vertices.size()) : 1;
             cw_ = wx / static_cast<double>(nx_);
             ch_ = wy / static_cast<double>(ny_);
         }
