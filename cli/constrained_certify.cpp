@@ -138,7 +138,10 @@ public:
     /// Calls f(v) once for every vertex v that may lie within `tol` of segment a-b.
     template <class F>
     void near_segment(Point2 a, Point2 b, double tol, F&& f) const {
-        const double xlo = std::min(a.x, b.x) - 2 * tol, xhi = std::max(a.x, b.x) + 2 * tol;
+        const double xmin = std::min(a.x, b.x), xmax = std::max(a.x, b.x);
+        const double xlo = xmin - 2 * tol, xhi = xmax + 2 * tol;
+        const double slope = a.x != b.x ? (b.y - a.y) / (b.x - a.x) : 0;
+        const auto y_at = [&](double x) { return a.y + (std::clamp(x, xmin, xmax) - a.x) * slope; };
         const std::size_t c0 = column(xlo), c1 = column(xhi);
         for (std::size_t c = c0 > 0 ? c0 - 1 : 0; c <= std::min(c1 + 1, nx_ - 1); ++c) {
             std::size_t r0 = 0, r1 = ny_ - 1;
@@ -151,11 +154,6 @@ public:
                     const double cl = static_cast<double>(c);
                     const double lo = std::max(xlo, x0_ + (cl - 1) * cw_ - 2 * tol);
                     const double hi = std::min(xhi, x0_ + (cl + 2) * cw_ + 2 * tol);
-                    const double slope = (b.y - a.y) / (b.x - a.x);
-                    const auto y_at = [&](double x) {
-                        return a.y + (std::clamp(x, std::min(a.x, b.x), std::max(a.x, b.x)) - a.x) *
-                                         slope;
-                    };
                     const double ya = y_at(lo), yb = y_at(hi);
                     if (std::isfinite(ya) && std::isfinite(yb)) {
                         ymin = std::min(ya, yb);
