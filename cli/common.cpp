@@ -2,12 +2,14 @@
 #include "common.hpp"
 
 #include <charconv>
+#include <cstring>
 #include <cmath>
 #include <system_error>
 #include <type_traits>
 #include <variant>
 
 #include "exidel/delaunay/triangulate.hpp"
+#include "memory.hpp"
 
 namespace exidel::cli {
 
@@ -214,6 +216,10 @@ void print_triangulation_failure(std::ostream& err, const Triangulated& t) {
     err << '\n';
 }
 
+std::string write_error(const std::string& what, int error) {
+    return error == 0 ? what : what + ": " + std::strerror(error);
+}
+
 void print_findings(std::ostream& err, const delaunay::Certificate& c) {
     for (const delaunay::Finding& f : c.findings) {
         err << "exidel: certificate: " << delaunay::to_string(f.kind) << ": " << f.message << '\n';
@@ -228,6 +234,7 @@ PointRun::PointRun(const PointCommand& command, Clock::time_point start)
     : progress(!command.quiet), command_(command), start_(start) {}
 
 std::optional<io::PointFile> PointRun::read() {
+    note_memory_need("reading the input", 0, 0);
     const Clock::time_point start = Clock::now();
     std::optional<io::PointFile> points = command_.input.read(command_.threads, progress);
     if (points) times.read = ms_since(start);
@@ -237,6 +244,8 @@ std::optional<io::PointFile> PointRun::read() {
 Triangulated PointRun::triangulate(const AnyKernel& kernel, std::span<const Point2> points,
                                    const delaunay::Options& options, bool counters) {
     progress.phase("triangulating " + std::to_string(points.size()) + " points");
+    note_memory_need("triangulating", points.size(),
+                     static_cast<double>(points.size()) * triangulate_bytes_per_point);
     return recorded(triangulate_points(kernel, points, options, counters));
 }
 

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstddef>
 #include <fstream>
@@ -28,6 +29,7 @@
 #include "exidel/io/constraints.hpp"
 #include "exidel/io/points.hpp"
 #include "exidel/predicates/registry.hpp"
+#include "memory.hpp"
 #include "options.hpp"
 #include "output.hpp"
 #include "progress.hpp"
@@ -200,21 +202,28 @@ bool reported(Step step, Progress* progress = nullptr) {
     }
 }
 
+/// "what: <strerror(error)>", or "what" alone when error is 0.
+std::string write_error(const std::string& what, int error);
+
 /// Writes through `write(std::ostream&)` into `file`'s temporary; throws on I/O errors.
 template <class Write>
 void write_into(const PendingFile& file, Write write) {
+    errno = 0;
     std::ofstream out = file.open();
     if (out) write(out);
     out.close();
-    if (!out) throw std::runtime_error("error while writing '" + file.path() + "'");
+    // The stream keeps no error code; errno holds the failed system call's (ENOSPC for a
+    // full disk, EFBIG past a file size limit, ENOENT for a removed directory).
+    if (!out) throw std::runtime_error(write_error("cannot write '" + file.path() + "'", errno));
 }
 
 /// Writes through `write(std::ostream&)` on standard output; throws on I/O errors.
 template <class Write>
 void write_stdout(Write write) {
+    errno = 0;
     write(std::cout);
     std::cout.flush();
-    if (!std::cout) throw std::runtime_error("error while writing the output");
+    if (!std::cout) throw std::runtime_error(write_error("cannot write the output", errno));
 }
 
 /// What the output step writes into one file: `write(std::ostream&)`.
@@ -252,6 +261,8 @@ public:
     Triangulated triangulate_with(const AnyKernel& kernel, std::size_t points,
                                   std::string_view what, Make make) {
         progress.phase("triangulating " + std::to_string(points) + " points" + std::string(what));
+        note_memory_need("triangulating", points,
+                         static_cast<double>(points) * triangulate_bytes_per_point);
         return recorded(timed_triangulation(kernel, make));
     }
     /// The output step (times.write): `write` on standard output when `output` holds no

@@ -2,6 +2,9 @@
 // function per subcommand, each in its own file (see commands.hpp).
 #include <malloc.h>
 
+#include <csignal>
+#include <new>
+
 #include <array>
 #include <exception>
 #include <iostream>
@@ -9,6 +12,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "memory.hpp"
 #include "exidel/delaunay/algorithms.hpp"
 #include "exidel/predicates/build_info.hpp"
 
@@ -80,6 +84,10 @@ int main(int argc, char** argv) {
     // some machines (docs/measurements.md, "Text input and output").
     mallopt(M_MMAP_THRESHOLD, 32 << 20);
     mallopt(M_TRIM_THRESHOLD, 64 << 20);
+    // A write past the file size limit (ulimit -f) raises SIGXFSZ, which would end the
+    // process on the spot and leave the temporary output behind. Ignored, the write fails
+    // with EFBIG like a full disk's ENOSPC: the error is said and the temporary removed.
+    std::signal(SIGXFSZ, SIG_IGN);
     const std::vector<std::string_view> args(argv + (argc > 0 ? 1 : 0), argv + argc);
     if (args.empty()) {
         print_usage(std::cerr);
@@ -98,6 +106,12 @@ int main(int argc, char** argv) {
         if (c.name != first) continue;
         try {
             return c.run(std::span(args).subspan(1));
+        } catch (const std::bad_alloc&) {
+            // The stack is unwound: the pending output files are gone, and so is most of
+            // what was allocated, so the message can be built.
+            std::cout.flush();
+            std::cerr << "exidel: " << exidel::cli::out_of_memory_message() << '\n';
+            return exit_failure;
         } catch (const std::exception& e) {
             // Only resource exhaustion gets here (an exact kernel out of memory): report it
             // instead of terminating.

@@ -4,11 +4,16 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <system_error>
 
 namespace exidel::cli {
 
 Progress::Progress(bool enabled) {
-    if (enabled && ::isatty(STDERR_FILENO)) thread_ = std::thread([this] { run(); });
+    if (!enabled || !::isatty(STDERR_FILENO)) return;
+    // No thread (too little memory for its stack): no progress line, the run goes on.
+    try {
+        thread_ = std::thread([this] { run(); });
+    } catch (const std::system_error&) {}
 }
 
 Progress::~Progress() { stop(); }

@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <cstring>
 #include <istream>
+#include <new>
 #include <ostream>
 
 #include "exidel/delaunay/parallel.hpp"
@@ -752,32 +753,61 @@ FileBytes::FileBytes(const std::string& path) {
         int fd;
         ~Closer() { ::close(fd); }
     } closer{fd};
-    struct stat st {};
-    if (::fstat(fd, &st) != 0) fail(errno);
-    if (S_ISDIR(st.st_mode)) fail(EISDIR);
-    if (S_ISREG(st.st_mode) && st.st_size > 0) {
-        map_size_ = static_cast<std::size_t>(st.st_size);
-        // MAP_POPULATE: the pages are mapped in one go instead of one fault each.
-        void* map = ::mmap(nullptr, map_size_, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
-        if (map != MAP_FAILED) {
-            map_ = map;
-            view_ = std::string_view(static_cast<const char*>(map_), map_size_);
-            return;
+    struct stat before {};
+    if (::fstat(fd, &before) != 0) fail(errno);
+    if (S_ISDIR(before.st_mode)) fail(EISDIR);
+    // read() until the end, into bytes of our own. (Not on a read error: EINTR is retried.)
+    const auto read_some = [&](char* into, std::size_t room) {
+        for (;;) {
+            const ::ssize_t got = ::read(fd, into, room);
+            if (got >= 0) return static_cast<std::size_t>(got);
+            if (errno != EINTR) fail(errno);
         }
-        map_size_ = 0;  // not mappable (some file systems): read it instead
+    };
+    if (S_ISREG(before.st_mode) && before.st_size > 0) {
+        // A private copy, not a mapping of the file: another process that truncates a
+        // mapped file makes the next access to the lost pages raise SIGBUS, and one that
+        // rewrites it changes the bytes between the parsers' passes (an xy file is cut
+        // into parts by counting lines, then parsed into room for that many points). The
+        // copy goes into anonymous memory asking for huge pages: fresh 4 kB pages cost
+        // more than the copy on some machines (docs/measurements.md, "Text input").
+        const auto size = static_cast<std::size_t>(before.st_size);
+        void* map =
+            ::mmap(nullptr, size, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+        if (map == MAP_FAILED) throw std::bad_alloc();
+        map_ = map;
+        map_size_ = size;
+#ifdef MADV_HUGEPAGE
+        ::madvise(map_, map_size_, MADV_HUGEPAGE);
+#endif
+        char* bytes = static_cast<char*>(map_);
+        std::size_t used = 0;
+        for (std::size_t got; used < size && (got = read_some(bytes + used, size - used)) > 0;) {
+            used += got;
+        }
+        char extra;
+        const bool longer = used == size && read_some(&extra, 1) > 0;
+        struct stat after {};
+        if (::fstat(fd, &after) != 0) fail(errno);
+        if (used != size || longer || after.st_size != before.st_size ||
+            after.st_mtim.tv_sec != before.st_mtim.tv_sec ||
+            after.st_mtim.tv_nsec != before.st_mtim.tv_nsec) {
+            throw std::runtime_error("the input '" + path + "' changed while it was read (" +
+                                     std::to_string(size) + " bytes when opened, " +
+                                     std::to_string(after.st_size) +
+                                     " now): read it once it is complete");
+        }
+        view_ = std::string_view(bytes, size);
+        return;
     }
     // Read until the end: the size is at most a hint (a pipe or /proc file says 0).
     copy_.resize(1 << 16);
     std::size_t used = 0;
     for (;;) {
         if (used == copy_.size()) copy_.resize(2 * copy_.size());
-        const ::ssize_t got = ::read(fd, copy_.data() + used, copy_.size() - used);
-        if (got < 0) {
-            if (errno == EINTR) continue;
-            fail(errno);
-        }
+        const std::size_t got = read_some(copy_.data() + used, copy_.size() - used);
         if (got == 0) break;
-        used += static_cast<std::size_t>(got);
+        used += got;
     }
     copy_.resize(used);
     view_ = copy_;

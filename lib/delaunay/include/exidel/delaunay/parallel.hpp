@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cstddef>
 #include <exception>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -36,7 +37,18 @@ void parallel_for(std::size_t count, unsigned threads, Job&& job) {
         }
     };
     std::vector<std::thread> pool;
-    for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(work, w);
+    pool.reserve(workers - 1);
+    for (std::size_t w = 1; w < workers; ++w) {
+        // A thread that cannot be created (too little memory for its stack under a
+        // ulimit -v, a process limit) leaves its jobs to the threads that could: the
+        // result does not depend on the thread count. Letting the exception escape
+        // would destroy joinable threads, which terminates the program.
+        try {
+            pool.emplace_back(work, w);
+        } catch (const std::system_error&) {
+            break;
+        }
+    }
     work(0);
     for (auto& t : pool) t.join();
     for (auto& e : errors) {

@@ -128,12 +128,14 @@ std::vector<Point2> parse_points(std::string_view data, PointFormat format);
 std::vector<Point2> read_points(std::istream& in, PointFormat format);
 PointFile read_point_file(std::istream& in, PointFormat format, const ReadOptions& options = {});
 
-/// The bytes of the file at `path`: mapped read-only when it is a regular file, read
-/// into memory otherwise (a pipe, /proc). Mapping skips what reading into a string costs
-/// on large inputs: zero-filling the buffer, then copying every page into it (at 10^7
-/// points, 385 MB, more time than parsing them; docs/measurements.md). The constructor
+/// The bytes of the file at `path`, read into memory of their own (anonymous memory
+/// asking for huge pages for a regular file; a growing string for a pipe or /proc file).
+/// Not a mapping of the file: a mapped file that another process truncates kills the
+/// reader with SIGBUS, and one it rewrites changes under the parser. The constructor
 /// throws std::runtime_error "cannot read 'PATH': REASON" with the system's reason (no
-/// such file, permission denied, is a directory).
+/// such file, permission denied, is a directory), "the input 'PATH' changed while it was
+/// read (...)" when the size or modification time of a regular file changed during the
+/// read, and std::bad_alloc when there is no memory for the copy.
 class FileBytes {
 public:
     explicit FileBytes(const std::string& path);
