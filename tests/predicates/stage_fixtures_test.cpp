@@ -1,0 +1,129 @@
+// Stage fixtures: for each predicate of the plane and each stage of the adaptive kernel, a
+// query that the stage decides, with the sign and the stage it must report. They were
+// found so that mutation testing (docs/mutation.md) has a test that reaches each stage and
+// fails when the stage answers differently: a stage skipped or merged into the next one,
+// a stage reporting another's name (the `stages` study reads it), an exact-differences
+// shortcut taken or not, an exact stage that sums where it should subtract.
+//
+// The generated ones come from seeded searches over near-collinear and near-cocircular
+// points (rounded, nudged by up to 3 ulps, translated by up to 2^61, scaled by 2^228 or
+// 2^-228 to leave the double-word range), the first query each stage decided; the
+// constructed ones are exact degeneracies built to reach a stage no random query reached
+// (each says how). Every sign is checked against GMP here as well.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "exidel/predicates/exact.hpp"
+#include "exidel/predicates/predicate.hpp"
+#include "exidel/predicates/staged.hpp"
+
+namespace exidel {
+namespace {
+
+struct StageFixture {
+    const char* name;
+    Predicate predicate;
+    std::vector<Point2> points;
+    AdaptiveStage stage;
+    Sign sign;
+};
+
+Sign gmp_sign(Predicate which, std::span<const Point2> p) {
+    switch (which) {
+        case Predicate::orient2d: return GmpExactKernel::orient2d(p[0], p[1], p[2]);
+        case Predicate::incircle: return GmpExactKernel::incircle(p[0], p[1], p[2], p[3]);
+        case Predicate::incircle_cosine:
+            return GmpExactKernel::incircle_cosine(p[0], p[1], p[2], p[3]);
+        case Predicate::compare_distance: return GmpExactKernel::compare_distance(p[0], p[1], p[2]);
+    }
+    return Sign::zero;
+}
+
+// clang-format off
+const std::vector<StageFixture> generated = {
+    {"compare_distance exact (circle)", Predicate::compare_distance, {{-0x1.1e67898403682p-11, 0x1.83555e3b7cc7ep-10}, {-0x1.299cbbe64135p+8, 0x1.0ce17bd1e76fdp+3}, {-0x1.8b9d13279a79p+6, -0x1.18d24ba1953f3p+8}}, AdaptiveStage::exact, Sign::positive},
+    {"compare_distance exact (circle+T)", Predicate::compare_distance, {{-0x1.9f53b521e92dp+3, 0x1.0e1ac5f7d8f9bp+6}, {0x1.623294bf67966p+3, 0x1.41146029a85cbp+5}, {0x1.7650639d367cdp+4, 0x1.04b3165b2eb45p+6}}, AdaptiveStage::exact, Sign::positive},
+    {"incircle double_word (circle)", Predicate::incircle, {{-0x1.299cbbe64135p+8, 0x1.0ce17bd1e76fdp+3}, {-0x1.47c4e67ffbf71p+7, 0x1.f122d36246725p+7}, {-0x1.2559ff7ed338cp+8, 0x1.9707707a7ef55p+5}, {-0x1.8b9d13279a79p+6, -0x1.18d24ba1953f3p+8}}, AdaptiveStage::double_word, Sign::negative},
+    {"incircle double_word (circle+T)", Predicate::incircle, {{0x1.623294bf67966p+3, 0x1.41146029a85cbp+5}, {-0x1.28367fc0ce7c1p+5, 0x1.7bab5bdaddc51p+6}, {-0x1.436789ef67782p+1, 0x1.99c7825177701p+6}, {0x1.7650639d367cdp+4, 0x1.04b3165b2eb45p+6}}, AdaptiveStage::double_word, Sign::negative},
+    {"incircle_cosine double_word (circle)", Predicate::incircle_cosine, {{-0x1.299cbbe64135p+8, 0x1.0ce17bd1e76fdp+3}, {-0x1.47c4e67ffbf71p+7, 0x1.f122d36246725p+7}, {-0x1.2559ff7ed338cp+8, 0x1.9707707a7ef55p+5}, {-0x1.8b9d13279a79p+6, -0x1.18d24ba1953f3p+8}}, AdaptiveStage::double_word, Sign::negative},
+    {"incircle_cosine double_word (circle+T)", Predicate::incircle_cosine, {{0x1.623294bf67966p+3, 0x1.41146029a85cbp+5}, {-0x1.436789ef67782p+1, 0x1.99c7825177701p+6}, {-0x1.28367fc0ce7c1p+5, 0x1.7bab5bdaddc51p+6}, {0x1.7650639d367cdp+4, 0x1.04b3165b2eb45p+6}}, AdaptiveStage::double_word, Sign::positive},
+    {"incircle_cosine exact (circle+T)", Predicate::incircle_cosine, {{0x1.019e933c1ad4dp+18, 0x1.067f4011e9503p+18}, {0x1.98caaf5220d64p+17, 0x1.8d95242d9e13cp+17}, {0x1.845d267588f3p+17, 0x1.f395c969f1192p+17}, {0x1.9703b88d209ffp+17, 0x1.05bbae1e248f4p+18}}, AdaptiveStage::exact, Sign::positive},
+    {"incircle_cosine stage_b (circle)", Predicate::incircle_cosine, {{0x1.6b21a06a4409bp+21, -0x1.49eca0ef41e54p+22}, {0x1.6b21a06a4409ap+21, -0x1.49eca0ef41e55p+22}, {0x1.6b21a06a4409ap+21, -0x1.49eca0ef41e54p+22}, {0x1.6b21a06a4409ap+21, -0x1.49eca0ef41e55p+22}}, AdaptiveStage::stage_b, Sign::zero},
+    {"incircle_cosine stage_b (circle+T)", Predicate::incircle_cosine, {{0x1.6704b3ab2629ap+57, 0x1.6704b3ab22c9dp+57}, {0x1.6704b3ab2629ap+57, 0x1.6704b3ab22c9dp+57}, {0x1.6704b3ab2629ap+57, 0x1.6704b3ab22c9dp+57}, {0x1.6704b3ab2629ap+57, 0x1.6704b3ab22c9dp+57}}, AdaptiveStage::stage_b, Sign::zero},
+    {"incircle_cosine stage_c (circle+T)", Predicate::incircle_cosine, {{0x1.623294bf67966p+3, 0x1.41146029a85cbp+5}, {-0x1.28367fc0ce7c1p+5, 0x1.7bab5bdaddc51p+6}, {-0x1.436789ef67782p+1, 0x1.99c7825177701p+6}, {0x1.7650639d367cdp+4, 0x1.04b3165b2eb45p+6}}, AdaptiveStage::stage_c, Sign::positive},
+    {"orient2d stage_b (line)", Predicate::orient2d, {{0x1.b739dc21534c8p-26, -0x1.ac172f28ad158p-27}, {0x1.13d3976999ddp+0, -0x1.38bda38cc009p+0}, {0x1.db1f14080067fp-2, -0x1.0d5a90e5ac85bp-1}}, AdaptiveStage::stage_b, Sign::negative},
+    {"orient2d stage_b (line+T)", Predicate::orient2d, {{0x1.75c8ad799f3a7p+21, 0x1.75c8ad7736762p+21}, {0x1.c20a9fa558268p+26, 0x1.4f8defbb29ccep+26}, {0x1.9d60b22e95ee7p+25, 0x1.37844fbc263cp+25}}, AdaptiveStage::stage_b, Sign::positive},
+    {"orient2d stage_c (line)", Predicate::orient2d, {{0x1.2a68d760a9188p-8, -0x1.8c369c1a6659cp-8}, {-0x1.c649c8d0e98cp-3, -0x1.c05ce7016f586p+0}, {0x1.6c44f635dd50ap-9, -0x1.432d4bd4fb722p-6}}, AdaptiveStage::stage_c, Sign::positive},
+    {"orient2d stage_c (line+T)", Predicate::orient2d, {{0x1.e328d54aacf15p+3, 0x1.e328d555f0cadp+3}, {-0x1.fac83c40a5dcp+26, -0x1.d3ef99eaddbaap+28}, {-0x1.9c08bb6f851fap+26, -0x1.7c735997f8138p+28}}, AdaptiveStage::stage_c, Sign::negative},
+    {"incircle stage_b (circle*2^-228)", Predicate::incircle, {{-0x1.ef4b47321a44cp-215, 0x1.a35e2c7424b27p-214}, {0x1.711342f23f5dfp-214, -0x1.3c917d4848dc7p-214}, {0x1.f6e4625998b6dp-216, 0x1.cd9a71a30bdb1p-214}, {0x1.6ec111c5f1fc1p-214, 0x1.2f4e3bdd13542p-214}}, AdaptiveStage::stage_b, Sign::negative},
+    {"incircle stage_b (circle*2^228)", Predicate::incircle, {{-0x1.db93d5a2240dep+243, -0x1.0e3dc8827b023p+245}, {-0x1.1cdab39b1e5cap+245, -0x1.35ed6f89f8446p+243}, {-0x1.333b541b939a3p+244, 0x1.f7d4fa771fbf3p+244}, {-0x1.0b40f652a062cp+245, 0x1.f4cf3a75be3c2p+243}}, AdaptiveStage::stage_b, Sign::positive},
+    {"incircle stage_c (circle*2^-228)", Predicate::incircle, {{-0x1.f1bfb98adcc67p-215, -0x1.a727e3790e6a6p-215}, {0x1.d2778ed6040b7p-216, -0x1.31218512bafe2p-214}, {-0x1.c00fe3654dfdfp-215, -0x1.db73f77d25097p-215}, {-0x1.b956f8a857a4fp-215, 0x1.e1b219ff25ce7p-215}}, AdaptiveStage::stage_c, Sign::positive},
+    {"incircle stage_c (circle*2^228)", Predicate::incircle, {{0x1.4c8481cef979p+246, -0x1.5a66a5fa9e68ap+248}, {0x1.98175a3ada48p+247, -0x1.12eecd54ffceap+247}, {-0x1.6365ed4505fa9p+247, 0x1.a44c18bdfd7eep+247}, {0x1.408139b483046p+245, -0x1.760dd4ff0746fp+248}}, AdaptiveStage::stage_c, Sign::positive},
+    {"incircle_cosine exact (circle+T*2^-228)", Predicate::incircle_cosine, {{0x1.c0e97a4e60e37p-184, 0x1.c0e1ffd70a01fp-184}, {0x1.c0e26d3017e09p-184, 0x1.c0e9e7a772ecp-184}, {0x1.c0e472f19ee08p-184, 0x1.c0e0df8e78097p-184}, {0x1.c0e302be08382p-184, 0x1.c0e18c1d93f4ep-184}}, AdaptiveStage::exact, Sign::positive},
+    {"incircle_cosine stage_c (circle*2^-228)", Predicate::incircle_cosine, {{-0x1.f1bfb98adcc67p-215, -0x1.a727e3790e6a6p-215}, {0x1.d2778ed6040b7p-216, -0x1.31218512bafe2p-214}, {-0x1.c00fe3654dfdfp-215, -0x1.db73f77d25097p-215}, {-0x1.b956f8a857a4fp-215, 0x1.e1b219ff25ce7p-215}}, AdaptiveStage::stage_c, Sign::negative},
+};
+// clang-format on
+
+const std::vector<StageFixture> constructed = {
+    // Exactly collinear through the origin, every difference exact (c is the origin) but
+    // 70 bits apart, too wide for the small integers: stage B's value is the exact one,
+    // zero, and with no tail it is the answer (the exact-differences shortcut).
+    {"orient2d exact differences, tie",
+     Predicate::orient2d,
+     {{0x1p-60, 0x1.8p-59}, {0x1p+10, 0x1.8p+11}, {0, 0}},
+     AdaptiveStage::stage_b,
+     Sign::zero},
+    // Exactly collinear on y = x, 2^60 away from c: every difference rounds (tail 1 or 3)
+    // and the tail correction cancels too, so only the exact stage can say zero.
+    {"orient2d inexact differences, tie",
+     Predicate::orient2d,
+     {{1, 1}, {3, 3}, {0x1p+60, 0x1p+60}},
+     AdaptiveStage::exact,
+     Sign::zero},
+    // |p - c| = |q - c| exactly, differences exact but 70 bits apart: the squares' exact
+    // sum (stage B) says zero.
+    {"compare_distance exact differences, tie",
+     Predicate::compare_distance,
+     {{0, 0}, {0x1p-60, 0x1p+10}, {0x1p+10, 0x1p-60}},
+     AdaptiveStage::stage_b,
+     Sign::zero},
+    // Four points of the circle x^2 + y^2 = 2^456 + 1, (u, v), (v, u), (-u, v), (-v, -u)
+    // with u = 2^228, v = 1: cocircular exactly, differences u + v that round, outside the
+    // double-word range: the exact stage decides the tie.
+    {"incircle inexact differences, tie",
+     Predicate::incircle,
+     {{0x1p+228, 1}, {1, 0x1p+228}, {-0x1p+228, 1}, {-1, -0x1p+228}},
+     AdaptiveStage::exact,
+     Sign::zero},
+    // (a - d).(b - d) = 0 exactly with a = (2^60, 1.5), b = (0.5, 2^60), d = (1, 1): the
+    // differences round (2^60 - 1), stage B's and C's values are zero, so the dot product's
+    // exact stage decides; c far off makes the other dot product positive.
+    {"incircle_cosine, a dot product zero with rounded differences",
+     Predicate::incircle_cosine,
+     {{0x1p+60, 1.5}, {0.5, 0x1p+60}, {0x1p+61, 0x1p+61}, {1, 1}},
+     AdaptiveStage::exact,
+     Sign::negative},
+};
+
+void check(const StageFixture& f) {
+    AdaptiveStage stage{};
+    const Sign sign = staged(f.predicate, f.points, stage);
+    EXPECT_EQ(gmp_sign(f.predicate, f.points), f.sign) << f.name << ": the fixture's sign";
+    EXPECT_EQ(sign, f.sign) << f.name;
+    EXPECT_EQ(static_cast<int>(stage), static_cast<int>(f.stage)) << f.name;
+}
+
+TEST(StageFixtures, GeneratedQueriesAreDecidedByTheirStage) {
+    for (const StageFixture& f : generated) check(f);
+}
+
+TEST(StageFixtures, ConstructedTiesAreDecidedByTheirStage) {
+    for (const StageFixture& f : constructed) check(f);
+}
+
+}  // namespace
+}  // namespace exidel
