@@ -26,18 +26,18 @@ namespace {
 namespace fs = std::filesystem;
 using namespace exidel::cli_test;
 
-// Under AddressSanitizer the process reserves terabytes of address space for its shadow
-// memory, so an address-space limit (ulimit -v) stops it before main().
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool address_sanitizer = true;
+// Under AddressSanitizer or ThreadSanitizer the process reserves terabytes of address
+// space for its shadow memory, so an address-space limit (ulimit -v) stops it before main().
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+constexpr bool shadow_memory = true;
 #elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool address_sanitizer = true;
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+constexpr bool shadow_memory = true;
 #else
-constexpr bool address_sanitizer = false;
+constexpr bool shadow_memory = false;
 #endif
 #else
-constexpr bool address_sanitizer = false;
+constexpr bool shadow_memory = false;
 #endif
 
 /// A fresh, empty directory of the test work directory.
@@ -113,8 +113,9 @@ TEST(Faults, AFileSizeLimitStopsTheWriteAndLeavesNothingBehind) {
 }
 
 TEST(Faults, TooLittleMemoryIsSaidWithTheNeedAndLeavesNothingBehind) {
-    if (address_sanitizer)
-        GTEST_SKIP() << "AddressSanitizer cannot run under an address-space limit";
+    if (shadow_memory) {
+        GTEST_SKIP() << "a sanitizer's shadow memory does not fit an address-space limit";
+    }
     const std::string dir = fresh_dir("memory_limit");
     constexpr std::size_t n = 2'000'000;
     const std::string input = f64_points(work_path("memory_limit.f64"), n, 3);

@@ -21,6 +21,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "exidel/predicates/constants.hpp"
 
@@ -143,6 +144,154 @@ int add_skip_rules(const std::string& source, std::map<std::string, Rational>& v
     return found;
 }
 
+// ---- The formulas the proofs analyse ---------------------------------------------------
+// A proven constant is only half of a bound: the proof also fixes the expression it is used
+// in (the permanent it multiplies, the term it is added to, the estimate it is compared
+// with). These are those expressions, whitespace-normalised, each with the section of
+// proofs/bounds.md that analyses it. Every use of a constant (`eb::`) in adaptive.cpp and
+// adaptive3d.cpp must lie inside one of them, and each must still be in its file, so an
+// edit to a bound's formula (a term dropped, a sign flipped) fails here until the proof is
+// changed with it. Mutation testing found such edits that no query could reveal: the
+// worst cases they would break are far rarer than any test's inputs (docs/mutation.md).
+struct Formula {
+    const char* file;   // the source file's name
+    const char* text;   // the expression, whitespace-normalised
+    const char* proof;  // where proofs/ analyses it
+};
+
+const Formula formulas[] = {
+    // orient2d and the dot products' stages B and C (product_pair_adapt).
+    {"adaptive.cpp", "double det = B[0] + B[1] + B[2] + B[3];",
+     "proofs/bounds.md#stages-b-and-c: det = est(B), lemma E"},
+    {"adaptive.cpp", "double errbound = eb::ccw_b * sum_abs;",
+     "proofs/bounds.md#stages-b-and-c, orient2d stage B"},
+    {"adaptive.cpp", "errbound = eb::ccw_c * sum_abs + eb::result_err * std::fabs(det);",
+     "proofs/bounds.md#stages-b-and-c, orient2d stage C"},
+    // incircle.
+    {"adaptive.cpp", "return filter_decides(det.hi, eb::icc_dw * t, sign);",
+     "proofs/bounds.md#incircle-double-word-stage"},
+    {"adaptive.cpp", "if (!in_double_word_range(w, eb::icc_dw_min, eb::icc_dw_max)) return false;",
+     "proofs/bounds.md#incircle-double-word-stage, the range"},
+    {"adaptive.cpp", "double det = detail::expansion_estimate(fin_length, fin);",
+     "proofs/bounds.md#incircle-stages-b-and-c: lemma E"},
+    {"adaptive.cpp", "double errbound = eb::icc_b * permanent;",
+     "proofs/bounds.md#incircle-stages-b-and-c, stage B"},
+    {"adaptive.cpp", "errbound = eb::icc_c * permanent + eb::result_err * std::fabs(det);",
+     "proofs/bounds.md#incircle-stages-b-and-c, stage C"},
+    {"adaptive.cpp", "const double first = eb::icc_a * permanent;",
+     "proofs/bounds.md#incircle, stage A"},
+    {"adaptive.cpp",
+     "const double errbound = negligible ? first : first + eb::underflow_incircle * spread;",
+     "proofs/bounds.md#underflow"},
+    // The dot products' filter and the cosine test.
+    {"adaptive.cpp", "const double errbound = eb::ccw_a * sum_abs + eb::underflow_orient;",
+     "proofs/bounds.md#orient2d, #underflow"},
+    {"adaptive.cpp", "return filter_decides(diff.hi, eb::cos_dw * t, sign);",
+     "proofs/bounds.md#cosine-double-word-stage"},
+    {"adaptive.cpp", "if (!in_double_word_range(w, eb::cos_dw_min, eb::cos_dw_max)) return false;",
+     "proofs/bounds.md#cosine-double-word-stage, the range"},
+    {"adaptive.cpp",
+     "const double eu = eb::ccw_a * (std::fabs(u1) + std::fabs(u2)) + eb::underflow_orient;",
+     "proofs/bounds.md#orient2d, #underflow"},
+    {"adaptive.cpp",
+     "const double ev = eb::ccw_a * (std::fabs(v1) + std::fabs(v2)) + eb::underflow_orient;",
+     "proofs/bounds.md#orient2d, #underflow"},
+    {"adaptive.cpp", "if (du <= eb::cos_max_dot_rel && dv <= eb::cos_max_dot_rel) {",
+     "proofs/cosine.md, the filter"},
+    {"adaptive.cpp", "if (smallest >= eb::cos_min_factor && left <= largest && right <= largest) {",
+     "proofs/cosine.md, the filter"},
+    {"adaptive.cpp",
+     "const double errbound = (eb::cos_rel + eb::cos_rel_dot * du) * left + (eb::cos_rel + "
+     "eb::cos_rel_dot * dv) * right;",
+     "proofs/cosine.md, the filter"},
+    // compare_distance.
+    {"adaptive.cpp", "const double errbound = eb::dist_a * permanent + eb::underflow_dist;",
+     "proofs/bounds.md#compare-distance"},
+    // orient3d and insphere.
+    {"adaptive3d.cpp",
+     "return filter_decides(det, filter_bound(eb::o3d_a * permanent, eb::underflow_orient3d, "
+     "spread),",
+     "proofs/bounds.md#orient3d, #underflow"},
+    {"adaptive3d.cpp", "return filter_decides(det.hi, eb::o3d_dw * t, sign);",
+     "proofs/bounds.md#orient3d-double-word-stage"},
+    {"adaptive3d.cpp",
+     "if (!detail::in_double_word_range(w, eb::o3d_dw_min, eb::o3d_dw_max)) return false;",
+     "proofs/bounds.md#orient3d-double-word-stage, the range"},
+    {"adaptive3d.cpp", "if (mm >= eb::isp_static_min && mm <= eb::isp_static_max) [[likely]] {",
+     "proofs/bounds.md#insphere-semi-static-filter, the range"},
+    {"adaptive3d.cpp", "return filter_decides(det, eb::isp_static * ((m2 * m2) * mm), sign);",
+     "proofs/bounds.md#insphere-semi-static-filter"},
+    {"adaptive3d.cpp",
+     "return filter_decides(det, filter_bound(eb::isp_a * permanent, eb::underflow_insphere, "
+     "spread),",
+     "proofs/bounds.md#insphere, #underflow"},
+    {"adaptive3d.cpp", "return filter_decides(det.hi, eb::isp_dw * t, sign);",
+     "proofs/bounds.md#insphere-double-word-stage"},
+    {"adaptive3d.cpp",
+     "if (!detail::in_double_word_range(w, eb::isp_dw_min, eb::isp_dw_max)) return false;",
+     "proofs/bounds.md#insphere-double-word-stage, the range"},
+};
+
+// The source with comments removed and every run of whitespace made one space.
+std::string normalised(const std::string& source) {
+    std::string out;
+    bool space = false;
+    for (std::size_t i = 0; i < source.size(); ++i) {
+        if (source.compare(i, 2, "//") == 0) {
+            while (i < source.size() && source[i] != '\n') ++i;
+            space = true;
+            continue;
+        }
+        const char c = source[i];
+        if (c == ' ' || c == '\n' || c == '\t' || c == '\r') {
+            space = true;
+            continue;
+        }
+        // No space after an opening or before a closing bracket: a line break there is
+        // the formatter's.
+        if (space && !out.empty() && out.back() != '(' && out.back() != '[' && c != ')' &&
+            c != ']') {
+            out += ' ';
+        }
+        space = false;
+        out += c;
+    }
+    return out;
+}
+
+// Fails for every pinned formula missing from `path` and every use of a constant outside one.
+int check_formulas(const std::string& source, const std::string& path) {
+    const std::string name = path.substr(path.find_last_of('/') + 1);
+    const std::string text = normalised(source);
+    std::vector<bool> covered(text.size(), false);
+    int failures = 0;
+    for (const Formula& f : formulas) {
+        if (name != f.file) continue;
+        const std::string pinned = normalised(f.text);
+        std::size_t at = text.find(pinned), count = 0;
+        for (; at != std::string::npos; at = text.find(pinned, at + 1), ++count) {
+            for (std::size_t i = at; i < at + pinned.size(); ++i) covered[i] = true;
+        }
+        if (count == 0) {
+            std::cout << "FAIL " << name << ": the formula `" << f.text << "` (" << f.proof
+                      << ") is not in the code: change the proof with the code\n";
+            ++failures;
+        }
+    }
+    std::size_t reported_to = 0;  // one line per statement
+    for (std::size_t at = text.find("eb::"); at != std::string::npos;
+         at = text.find("eb::", at + 1)) {
+        if (covered[at] || at < reported_to) continue;
+        const std::size_t semicolon = text.rfind(';', at);
+        const std::size_t from = semicolon == std::string::npos ? 0 : semicolon + 2;
+        reported_to = text.find(';', at) + 1;
+        std::cout << "FAIL " << name << ": a bound used outside the proven formulas: `"
+                  << text.substr(from, reported_to - from) << "`\n";
+        ++failures;
+    }
+    return failures;
+}
+
 // The list in code_constants() is written by hand; this makes sure it is complete.
 int unlisted_constants(const std::string& header, const std::map<std::string, Rational>& values) {
     const std::regex declaration(R"(inline\s+constexpr\s+double\s+(\w+)\s*=)");
@@ -178,6 +327,7 @@ int main(int argc, char** argv) {
         for (const char* path : {argv[2], argv[3]}) {
             const std::string source = read_file(path);
             add_range_limits(source, path, values);
+            failures += check_formulas(source, path);
             // Each file has the rule once (incircle's stage A; filter_bound): a rule the
             // regular expression no longer finds would go unchecked.
             if (add_skip_rules(source, values) == 0) {

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <span>
 #include <string>
 #include <vector>
@@ -109,6 +110,30 @@ const std::vector<StageFixture> constructed = {
      Sign::negative},
 };
 
+// Copies of fixtures scaled by 2^k (exact, and every stage decides relative to the
+// inputs' magnitude): near the bottom of the range where the expansions are error-free for
+// the predicate's degree (a stage that checked the range for a higher degree would hand
+// them to GMP), and beyond its top, where GMP decides. (The generated incircle fixtures at
+// 2^-228 are near the bottom of incircle's range already.)
+struct Scaled {
+    const char* fixture;
+    int k;
+    AdaptiveStage stage;
+};
+
+const std::vector<Scaled> scaled = {
+    {"orient2d stage_c (line)", -400, AdaptiveStage::stage_c},
+    {"orient2d inexact differences, tie", -400, AdaptiveStage::exact},
+    {"orient2d inexact differences, tie", 500, AdaptiveStage::gmp},
+    {"compare_distance exact (circle)", -400, AdaptiveStage::exact},
+    {"compare_distance exact (circle)", 600, AdaptiveStage::gmp},
+    {"incircle inexact differences, tie", -200, AdaptiveStage::exact},
+    {"incircle inexact differences, tie", 30, AdaptiveStage::gmp},
+    {"incircle_cosine stage_c (circle+T)", -400, AdaptiveStage::stage_c},
+    // Beyond the dot products' range the degree-8 comparison runs on cpp_int at once.
+    {"incircle_cosine exact (circle+T)", 600, AdaptiveStage::exact},
+};
+
 void check(const StageFixture& f) {
     AdaptiveStage stage{};
     const Sign sign = staged(f.predicate, f.points, stage);
@@ -123,6 +148,24 @@ TEST(StageFixtures, GeneratedQueriesAreDecidedByTheirStage) {
 
 TEST(StageFixtures, ConstructedTiesAreDecidedByTheirStage) {
     for (const StageFixture& f : constructed) check(f);
+}
+
+TEST(StageFixtures, ScaledToTheEdgesOfTheExpansionRange) {
+    for (const Scaled& s : scaled) {
+        const StageFixture* original = nullptr;
+        for (const auto* list : {&generated, &constructed}) {
+            for (const StageFixture& f : *list) {
+                if (std::string(f.name) == s.fixture) original = &f;
+            }
+        }
+        ASSERT_NE(original, nullptr) << s.fixture;
+        StageFixture f = *original;
+        const std::string name = std::string(f.name) + " * 2^" + std::to_string(s.k);
+        f.name = name.c_str();
+        for (Point2& p : f.points) p = {std::ldexp(p.x, s.k), std::ldexp(p.y, s.k)};
+        f.stage = s.stage;
+        check(f);
+    }
 }
 
 }  // namespace
