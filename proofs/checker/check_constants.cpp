@@ -168,7 +168,11 @@ const Formula formulas[] = {
     {"adaptive.cpp", "errbound = eb::ccw_c * sum_abs + eb::result_err * std::fabs(det);",
      "proofs/bounds.md#stages-b-and-c, orient2d stage C"},
     // incircle.
-    {"adaptive.cpp", "return filter_decides(det.hi, eb::icc_dw * t, sign);",
+    {"adaptive.cpp",
+     "const double t = (alift.hi * (std::fabs(bdx.hi * cdy.hi) + std::fabs(cdx.hi * bdy.hi)) + "
+     "blift.hi * (std::fabs(cdx.hi * ady.hi) + std::fabs(adx.hi * cdy.hi))) + "
+     "clift.hi * (std::fabs(adx.hi * bdy.hi) + std::fabs(bdx.hi * ady.hi)); "
+     "return filter_decides(det.hi, eb::icc_dw * t, sign);",
      "proofs/bounds.md#incircle-double-word-stage"},
     {"adaptive.cpp", "if (!in_double_word_range(w, eb::icc_dw_min, eb::icc_dw_max)) return false;",
      "proofs/bounds.md#incircle-double-word-stage, the range"},
@@ -186,7 +190,11 @@ const Formula formulas[] = {
     // The dot products' filter and the cosine test.
     {"adaptive.cpp", "const double errbound = eb::ccw_a * sum_abs + eb::underflow_orient;",
      "proofs/bounds.md#orient2d, #underflow"},
-    {"adaptive.cpp", "return filter_decides(diff.hi, eb::cos_dw * t, sign);",
+    {"adaptive.cpp",
+     "const double tu = std::fabs(adx.hi * bdx.hi) + std::fabs(ady.hi * bdy.hi); "
+     "const double tv = std::fabs(acx.hi * bcx.hi) + std::fabs(acy.hi * bcy.hi); "
+     "const double t = (ac2.hi * bc2.hi) * (tu * tu) + (ad2.hi * bd2.hi) * (tv * tv); "
+     "return filter_decides(diff.hi, eb::cos_dw * t, sign);",
      "proofs/bounds.md#cosine-double-word-stage"},
     {"adaptive.cpp", "if (!in_double_word_range(w, eb::cos_dw_min, eb::cos_dw_max)) return false;",
      "proofs/bounds.md#cosine-double-word-stage, the range"},
@@ -212,7 +220,11 @@ const Formula formulas[] = {
      "return filter_decides(det, filter_bound(eb::o3d_a * permanent, eb::underflow_orient3d, "
      "spread),",
      "proofs/bounds.md#orient3d, #underflow"},
-    {"adaptive3d.cpp", "return filter_decides(det.hi, eb::o3d_dw * t, sign);",
+    {"adaptive3d.cpp",
+     "const double t = (std::fabs(adz.hi) * (std::fabs(bdx.hi * cdy.hi) + "
+     "std::fabs(cdx.hi * bdy.hi)) + std::fabs(bdz.hi) * (std::fabs(cdx.hi * ady.hi) + "
+     "std::fabs(adx.hi * cdy.hi))) + std::fabs(cdz.hi) * (std::fabs(adx.hi * bdy.hi) + "
+     "std::fabs(bdx.hi * ady.hi)); return filter_decides(det.hi, eb::o3d_dw * t, sign);",
      "proofs/bounds.md#orient3d-double-word-stage"},
     {"adaptive3d.cpp",
      "if (!detail::in_double_word_range(w, eb::o3d_dw_min, eb::o3d_dw_max)) return false;",
@@ -225,7 +237,18 @@ const Formula formulas[] = {
      "return filter_decides(det, filter_bound(eb::isp_a * permanent, eb::underflow_insphere, "
      "spread),",
      "proofs/bounds.md#insphere, #underflow"},
-    {"adaptive3d.cpp", "return filter_decides(det.hi, eb::isp_dw * t, sign);",
+    {"adaptive3d.cpp",
+     "const auto pair = [](Word p, Word q, Word r, Word s) { return std::fabs(p.hi * q.hi) + "
+     "std::fabs(r.hi * s.hi); }; const double abp = pair(aex, bey, bex, aey), "
+     "bcp = pair(bex, cey, cex, bey); const double cdp = pair(cex, dey, dex, cey), "
+     "dap = pair(dex, aey, aex, dey); const double acp = pair(aex, cey, cex, aey), "
+     "bdp = pair(bex, dey, dex, bey); const double aezp = std::fabs(aez.hi), "
+     "bezp = std::fabs(bez.hi), cezp = std::fabs(cez.hi), dezp = std::fabs(dez.hi); "
+     "const double t = ((cdp * bezp + bdp * cezp) + bcp * dezp) * alift.hi + "
+     "((dap * cezp + acp * dezp) + cdp * aezp) * blift.hi + "
+     "((abp * dezp + bdp * aezp) + dap * bezp) * clift.hi + "
+     "((bcp * aezp + acp * bezp) + abp * cezp) * dlift.hi; "
+     "return filter_decides(det.hi, eb::isp_dw * t, sign);",
      "proofs/bounds.md#insphere-double-word-stage"},
     {"adaptive3d.cpp",
      "if (!detail::in_double_word_range(w, eb::isp_dw_min, eb::isp_dw_max)) return false;",
