@@ -150,6 +150,30 @@ TEST(StageFixtures, ConstructedTiesAreDecidedByTheirStage) {
     for (const StageFixture& f : constructed) check(f);
 }
 
+// Two equal points make orient2d and incircle zero, and compare_distance when p = q: the
+// small-integer stage says so at once, for every pair of positions, even where the
+// coordinates span 100 bits (too wide for the integers: without the check, a later stage
+// would find the zero and report itself).
+TEST(StageFixtures, TwoEqualPointsAreATieAtOnceInEveryPosition) {
+    const std::array<Point2, 4> base = {
+        {{0x1p-60, 1}, {0x1p+10, -3}, {-0x1p+40, 0x1p-70}, {5, 0x1p+30}}};
+    for (const Predicate which :
+         {Predicate::orient2d, Predicate::incircle, Predicate::compare_distance}) {
+        const std::size_t n = which == Predicate::incircle ? 4 : 3;
+        for (std::size_t i = 0; i < n; ++i) {
+            for (std::size_t j = i + 1; j < n; ++j) {
+                // compare_distance(c, p, q) is zero for p = q only.
+                if (which == Predicate::compare_distance && i == 0) continue;
+                std::vector<Point2> points(base.begin(), base.begin() + n);
+                points[j] = points[i];
+                const std::string name = std::string(predicate_name(which)) + " points " +
+                                         std::to_string(i) + " = " + std::to_string(j);
+                check({name.c_str(), which, points, AdaptiveStage::small_integer, Sign::zero});
+            }
+        }
+    }
+}
+
 TEST(StageFixtures, ScaledToTheEdgesOfTheExpansionRange) {
     for (const Scaled& s : scaled) {
         const StageFixture* original = nullptr;
