@@ -92,6 +92,15 @@ const std::vector<StageFixture> constructed = {
      {{0, 0}, {0x1p-60, 0x1p+10}, {0x1p+10, 0x1p-60}},
      AdaptiveStage::stage_b,
      Sign::zero},
+    // A rectangle centred at the origin, (u, v), (-u, v), (-u, -v), (u, -v) with u = 2^228,
+    // v = 1: cocircular, every difference exact (2u, 2v, 0) but 229 bits apart and beyond
+    // the double-word range, so stage B's exact value says zero (the exact-differences
+    // shortcut).
+    {"incircle exact differences, tie",
+     Predicate::incircle,
+     {{0x1p+228, 1}, {-0x1p+228, 1}, {-0x1p+228, -1}, {0x1p+228, -1}},
+     AdaptiveStage::stage_b,
+     Sign::zero},
     // Four points of the circle x^2 + y^2 = 2^456 + 1, (u, v), (v, u), (-u, v), (-v, -u)
     // with u = 2^228, v = 1: cocircular exactly, differences u + v that round, outside the
     // double-word range: the exact stage decides the tie.
