@@ -182,6 +182,24 @@ const Formula formulas[] = {
      "proofs/bounds.md#incircle-stages-b-and-c, stage B"},
     {"adaptive.cpp", "errbound = eb::icc_c * permanent + eb::result_err * std::fabs(det);",
      "proofs/bounds.md#incircle-stages-b-and-c, stage C"},
+    {"adaptive.cpp",
+     "const double sa = std::fabs(bdxcdy) + std::fabs(cdxbdy); "
+     "const double sb = std::fabs(cdxady) + std::fabs(adxcdy); "
+     "const double sc = std::fabs(adxbdy) + std::fabs(bdxady); "
+     "const double permanent = sa * alift + sb * blift + sc * clift;",
+     "proofs/bounds.md#incircle, stage A's permanent"},
+    {"adaptive.cpp", "const double spread = ((alift + blift) + (clift + sa)) + ((sb + sc) + 1.0);",
+     "proofs/bounds.md#underflow, the skip rule's bound on the underflow term's factor"},
+    {"adaptive.cpp",
+     "det += ((adx * adx + ady * ady) * ((bdx * cdytail + cdy * bdxtail) - (bdy * cdxtail + "
+     "cdx * bdytail)) + 2.0 * (adx * adxtail + ady * adytail) * (bdx * cdy - bdy * cdx)) + "
+     "((bdx * bdx + bdy * bdy) * ((cdx * adytail + ady * cdxtail) - (cdy * adxtail + "
+     "adx * cdytail)) + 2.0 * (bdx * bdxtail + bdy * bdytail) * (cdx * ady - cdy * adx)) + "
+     "((cdx * cdx + cdy * cdy) * ((adx * bdytail + bdy * adxtail) - (ady * bdxtail + "
+     "bdx * adytail)) + 2.0 * (cdx * cdxtail + cdy * cdytail) * (adx * bdy - ady * bdx));",
+     "proofs/bounds.md#incircle-stages-b-and-c, stage C's first-order correction"},
+    {"adaptive.cpp", "const double sum_abs = std::fabs(first) + std::fabs(second);",
+     "proofs/bounds.md#orient2d, the dot products' permanent"},
     {"adaptive.cpp", "const double first = eb::icc_a * permanent;",
      "proofs/bounds.md#incircle, stage A"},
     {"adaptive.cpp",

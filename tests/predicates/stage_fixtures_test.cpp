@@ -101,6 +101,21 @@ const std::vector<StageFixture> constructed = {
      {{0x1p+228, 1}, {-0x1p+228, 1}, {-0x1p+228, -1}, {0x1p+228, -1}},
      AdaptiveStage::stage_b,
      Sign::zero},
+    // The same rectangle with its last corner moved down by 1: exact differences, a
+    // nonzero value too small for stage B's estimate, so the shortcut gives its sign.
+    {"incircle exact differences, off the circle",
+     Predicate::incircle,
+     {{0x1p+228, 1}, {-0x1p+228, 1}, {-0x1p+228, -1}, {0x1p+228, -2}},
+     AdaptiveStage::stage_b,
+     Sign::negative},
+    // c and d on the same side of ab with dot products of opposite signs, |a-c|^2 |b-c|^2
+    // u^2 = |a-d|^2 |b-d|^2 v^2 = 40 exactly (u = 2, v = -1): a tie only the small integers
+    // of the cosine test decide.
+    {"incircle_cosine, same side, opposite dot products, tie",
+     Predicate::incircle_cosine,
+     {{0, 0}, {3, 0}, {1, 1}, {1, 2}},
+     AdaptiveStage::small_integer,
+     Sign::zero},
     // Four points of the circle x^2 + y^2 = 2^456 + 1, (u, v), (v, u), (-u, v), (-v, -u)
     // with u = 2^228, v = 1: cocircular exactly, differences u + v that round, outside the
     // double-word range: the exact stage decides the tie.
