@@ -21,7 +21,7 @@ inline constexpr double triangulate_bytes_per_point = 110;
 /// about `bytes` in all. Called from the main thread only.
 void note_memory_need(std::string_view what, std::size_t points, double bytes);
 
-/// "not enough memory for triangulating 1000000 points (needs about 92 MB)", or "not
+/// "not enough memory for triangulating 1000000 points (needs about 110 MB)", or "not
 /// enough memory" before any step was recorded.
 std::string out_of_memory_message();
 
