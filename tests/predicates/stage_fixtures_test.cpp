@@ -116,6 +116,13 @@ const std::vector<StageFixture> constructed = {
      {{0, 0}, {3, 0}, {1, 1}, {1, 2}},
      AdaptiveStage::small_integer,
      Sign::zero},
+    // A right angle at c, (a - c).(b - c) = 0 exactly, with d on the same side of ab: the
+    // second dot product is zero, so the answer is the first one's, negated, at stage B.
+    {"incircle_cosine, right angle at c",
+     Predicate::incircle_cosine,
+     {{0, 0}, {2, 0}, {1, 1}, {1, 2}},
+     AdaptiveStage::stage_b,
+     Sign::negative},
     // Four points of the circle x^2 + y^2 = 2^456 + 1, (u, v), (v, u), (-u, v), (-v, -u)
     // with u = 2^228, v = 1: cocircular exactly, differences u + v that round, outside the
     // double-word range: the exact stage decides the tie.
