@@ -123,6 +123,25 @@ const std::vector<StageFixture> constructed = {
      {{0, 0}, {2, 0}, {1, 1}, {1, 2}},
      AdaptiveStage::stage_b,
      Sign::negative},
+    // Near-cocircular with d next to a (seeded search): the semi-static bound, 130 eps
+    // times the fourth power of the largest difference, is too loose, and Shewchuk's stage
+    // A, relative to the permanent, decides; both report the filter.
+    {"incircle, decided by stage A after the semi-static filter",
+     Predicate::incircle,
+     {{0x1.ee3dd75bda907p+4, -0x1.38b4d24e14161p+3},
+      {0x1.9665b6af5f99cp+4, -0x1.3d9869981d6dep+4},
+      {0x1.4b32e6bbfbe8fp+4, 0x1.9118fd2959408p+4},
+      {0x1.ee401a477aee3p+4, -0x1.38a71b0a33a19p+3}},
+     AdaptiveStage::filter,
+     Sign::positive},
+    {"incircle, decided by stage A after the semi-static filter (2)",
+     Predicate::incircle,
+     {{0x1.d1fb73e99f9a7p-2, 0x1.77711fd301e5bp-2},
+      {0x1.d5652a9f9f2b2p-2, 0x1.78b38f5adac3dp-2},
+      {0x1.3ff8bd6d8445cp-1, 0x1.f8613a4b1869fp-3},
+      {0x1.d1dd1357fc484p-2, 0x1.7765674854751p-2}},
+     AdaptiveStage::filter,
+     Sign::negative},
     // Four points of the circle x^2 + y^2 = 2^456 + 1, (u, v), (v, u), (-u, v), (-v, -u)
     // with u = 2^228, v = 1: cocircular exactly, differences u + v that round, outside the
     // double-word range: the exact stage decides the tie.
