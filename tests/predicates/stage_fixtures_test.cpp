@@ -160,6 +160,169 @@ const std::vector<StageFixture> constructed = {
      Sign::negative},
 };
 
+// The cosine test's filter (incircle_cosine_impl): the entry test |u| > eu && |v| > ev,
+// the shortcut for equal signs, the limit du, dv <= 1/4 and the comparison of L with R
+// against its bound, each met at its boundary or just past it, so that a comparison
+// moved across its boundary, a bound computed otherwise or a return removed changes the
+// stage reported (the filter, or a later stage when the filter must not decide) or the
+// sign. The ones with long coordinates come from scripts/stage_fixture_search.cpp, which
+// replays the filter's arithmetic: a = (2^26, 0), b = (0, 2^26), c = (-s, 0) just outside
+// the circle on the diameter ab (v = (2^26 + s) s has one term), d rounded to integers on
+// that circle at 185 or 220 degrees from its centre, its y coordinate then bisected until
+// |u| is a chosen multiple of eu (u cancels, d just inside the circle), and s tuned.
+const std::vector<StageFixture> cosine_filter_edges = {
+    // |u| == eu exactly: a - d = (2^-535, 0), b - d = (2^-535, 1), so u = 2^-1070 in one
+    // term and fl(ccw_a * 2^-1070) = 0, eu = underflow_orient = 2^-1070. v = 1. The filter
+    // must not decide (u's sign is not certain to it); below expansion_safe's range, the
+    // exact stage answers.
+    {"incircle_cosine, |u| exactly its bound",
+     Predicate::incircle_cosine,
+     {{0x1p-535, 0}, {0x1p-535, 1}, {-1, 0}, {0, 0}},
+     AdaptiveStage::exact,
+     Sign::negative},
+    // The same with c and d exchanged: |v| == ev exactly.
+    {"incircle_cosine, |v| exactly its bound",
+     Predicate::incircle_cosine,
+     {{0x1p-535, 0}, {0x1p-535, 1}, {0, 0}, {-1, 0}},
+     AdaptiveStage::exact,
+     Sign::negative},
+    // u = 1 - (1 - 2^-53) = 2^-53, below eu (about 6 eps), and v = 120 of the same sign:
+    // only one dot product is certain, so the filter must not decide; stage B finds u's
+    // sign from exact differences.
+    {"incircle_cosine, u below its bound, v above, same signs",
+     Predicate::incircle_cosine,
+     {{1, 0x1.fffffffffffffp-1}, {1, -1}, {-10, 0}, {0, 0}},
+     AdaptiveStage::stage_b,
+     Sign::negative},
+    // u = -2, v = -3: both dot products negative and certain, the filter decides.
+    {"incircle_cosine, both dot products negative",
+     Predicate::incircle_cosine,
+     {{0, 0}, {4, 0}, {2, 1}, {1, 1}},
+     AdaptiveStage::filter,
+     Sign::positive},
+    // c and d on the same side of ab, u = 7, v = -1: L = 2 * 5 * 49 = 490 is far above
+    // R = 10 * 13 * 1 = 130, the filter answers -sign(u).
+    {"incircle_cosine, opposite dot products, L above R",
+     Predicate::incircle_cosine,
+     {{0, 0}, {3, 0}, {1, 1}, {1, 3}},
+     AdaptiveStage::filter,
+     Sign::negative},
+    // u = 0.25, v = -1: L = 0.625 far below R = 20.3125, the filter answers -sign(v).
+    {"incircle_cosine, opposite dot products, R above L",
+     Predicate::incircle_cosine,
+     {{0, 0}, {3, 0}, {1, 1}, {1, 1.5}},
+     AdaptiveStage::filter,
+     Sign::positive},
+    // Search (cosine_du_window): |u| = 4.56 eu, du = 0.281 just above the limit 1/4, and R
+    // thousands of times L: the filter must hand the query on (du computed as eu / |u| or
+    // eu / (|u| + eu) would be below 1/4 and let it decide).
+    {"incircle_cosine, |u| between 4 and 5 times its bound",
+     Predicate::incircle_cosine,
+     {{0x1p+26, 0}, {0, 0x1p+26}, {-0x1p-20, 0}, {-0x1.556748p+21, 0x1.7493945dff64ap+21}},
+     AdaptiveStage::double_word,
+     Sign::negative},
+    // The same with c and d exchanged: dv = 0.281.
+    {"incircle_cosine, |v| between 4 and 5 times its bound",
+     Predicate::incircle_cosine,
+     {{0x1p+26, 0}, {0, 0x1p+26}, {-0x1.556748p+21, 0x1.7493945dff64ap+21}, {-0x1p-20, 0}},
+     AdaptiveStage::double_word,
+     Sign::negative},
+    // Search (cosine_constructed): that d with c = (2^-20, 0) inside the circle: both dot
+    // products negative and certain, du = 0.281. Equal signs decide at once, whatever du.
+    {"incircle_cosine, same signs, |u| between 4 and 5 times its bound",
+     Predicate::incircle_cosine,
+     {{0x1p+26, 0}, {0, 0x1p+26}, {0x1p-20, 0}, {-0x1.556748p+21, 0x1.7493945dff64ap+21}},
+     AdaptiveStage::filter,
+     Sign::positive},
+    // Search (cosine_boundaries): |u| = 6.26 eu (du = 0.190) and s scanned double by double
+    // until fl(L - R) equals the filter's bound exactly (0x1.042d5fdc30dacp+108): not
+    // certain, the double-word stage decides.
+    {"incircle_cosine, L - R exactly the filter's bound",
+     Predicate::incircle_cosine,
+     {{0x1p+26, 0},
+      {0, 0x1p+26},
+      {-0x1.7a704bd525c65p-25, 0},
+      {-0x1.a2a4dep+23, 0x1.c0e4775c403d9p+24}},
+     AdaptiveStage::double_word,
+     Sign::positive},
+    // Search (cosine_boundaries): |u| = 7.11 eu (du = 0.164), fl(R - L) equal to the bound
+    // exactly (0x1.20cd5db7413cbp+108).
+    {"incircle_cosine, R - L exactly the filter's bound",
+     Predicate::incircle_cosine,
+     {{0x1p+26, 0},
+      {0, 0x1p+26},
+      {-0x1.1a1f809f4c3bfp-23, 0},
+      {-0x1.a2a4dep+23, 0x1.c0e4775c403f1p+24}},
+     AdaptiveStage::double_word,
+     Sign::negative},
+};
+
+// compare_distance past its filter: the filter's permanent, stage B when the differences
+// are exact but the squares are not (every low part of a Two-Product must count), and the
+// exact stage's squares of two-component differences (scripts/stage_fixture_search.cpp,
+// distance_filter_permanent and distance_stage_b, prints them all).
+//
+// The stage B ties: N^2 = m^2 + n^2 with N = s^2 + r^2 = 2^27 + 2^14 + 1, m = 2 s r =
+// 2^27 + 2^14, n = s^2 - r^2 = 2^14 + 1 (s = 2^13 + 1, r = 2^13). m^2 and n^2 are exact
+// doubles, N^2 needs 55 bits: its Two-Product is N^2 - 1 plus a low part 1. With
+// t = 2^-40 beside N the differences span 68 bits (no small integers), and
+// |(N, t)|^2 - |(m, n)|^2 = t^2 > 0, while the high parts alone give t^2 - 1 < 0. Each
+// position of the inexact square (x or y, p or q) is one fixture.
+const std::vector<StageFixture> distance_stages = {
+    // Scan p = (1 + k ulps, 0), q = (1, 0): at k = 2 the computed difference 2^-50 is above
+    // dist_a |p|^2 but not above dist_a (|p|^2 + |q|^2): the filter must not decide.
+    {"compare_distance, beyond half the filter's bound",
+     Predicate::compare_distance,
+     {{0, 0}, {0x1.0000000000002p+0, 0}, {1, 0}},
+     AdaptiveStage::small_integer,
+     Sign::positive},
+    // The differences exact, 70 bits apart, their squares exact: stage B's short path, a
+    // difference of 2^-120.
+    {"compare_distance stage B, exact squares, not a tie",
+     Predicate::compare_distance,
+     {{0, 0}, {0x1p-60, 0x1p+10}, {0x1p+10, 0}},
+     AdaptiveStage::stage_b,
+     Sign::positive},
+    {"compare_distance stage B, the low part of |p-c|^2 in x decides",
+     Predicate::compare_distance,
+     {{0, 0}, {0x1.0008002p+27, 0x1p-40}, {0x1.0008p+27, 0x1.0004p+14}},
+     AdaptiveStage::stage_b,
+     Sign::positive},
+    {"compare_distance stage B, the low part of |p-c|^2 in y decides",
+     Predicate::compare_distance,
+     {{0, 0}, {0x1p-40, 0x1.0008002p+27}, {0x1.0008p+27, 0x1.0004p+14}},
+     AdaptiveStage::stage_b,
+     Sign::positive},
+    {"compare_distance stage B, the low part of |q-c|^2 in x decides",
+     Predicate::compare_distance,
+     {{0, 0}, {0x1.0008p+27, 0x1.0004p+14}, {0x1.0008002p+27, 0x1p-40}},
+     AdaptiveStage::stage_b,
+     Sign::negative},
+    {"compare_distance stage B, the low part of |q-c|^2 in y decides",
+     Predicate::compare_distance,
+     {{0, 0}, {0x1.0008p+27, 0x1.0004p+14}, {0x1p-40, 0x1.0008002p+27}},
+     AdaptiveStage::stage_b,
+     Sign::negative},
+    // c = (0, -1): p - c = (1, 2^60 + 1) and q - c = (0, 2^60 + 1), the y differences
+    // rounding to 2^60 with a tail of 1. The exact stage squares (1 + 0) and (2^60 + 1):
+    // components equal to 1 and 0 must be told apart.
+    {"compare_distance exact, a difference of 1 and a tail of 1",
+     Predicate::compare_distance,
+     {{0, -1}, {1, 0x1p+60}, {0, 0x1p+60}},
+     AdaptiveStage::exact,
+     Sign::positive},
+    // Search (distance_sixteen_components, a fixed pseudo-random sequence): |q - c|^2 has
+    // 16 components in the exact stage, all its array holds (a loop one past them is seen
+    // by a sanitizer build here); p is q moved by one ulp in x.
+    {"compare_distance exact, 16 components in |q-c|^2",
+     Predicate::compare_distance,
+     {{-0x1.0b1333ad37da4p-32, -0x1.5ac196d951a5p-76},
+      {-0x1.b046002d3153dp+69, 0x1.141c88d67c83p-10},
+      {-0x1.b046002d3153ep+69, 0x1.141c88d67c83p-10}},
+     AdaptiveStage::exact,
+     Sign::negative},
+};
+
 // Copies of fixtures scaled by 2^k (exact, and every stage decides relative to the
 // inputs' magnitude): near the bottom of the range where the expansions are error-free for
 // the predicate's degree (a stage that checked the range for a higher degree would hand
@@ -198,6 +361,14 @@ TEST(StageFixtures, GeneratedQueriesAreDecidedByTheirStage) {
 
 TEST(StageFixtures, ConstructedTiesAreDecidedByTheirStage) {
     for (const StageFixture& f : constructed) check(f);
+}
+
+TEST(StageFixtures, TheCosineFilterDecidesExactlyUpToItsBounds) {
+    for (const StageFixture& f : cosine_filter_edges) check(f);
+}
+
+TEST(StageFixtures, CompareDistanceStagesSeeEveryLowOrderPart) {
+    for (const StageFixture& f : distance_stages) check(f);
 }
 
 // Two equal points make orient2d and incircle zero, and compare_distance when p = q: the
