@@ -243,10 +243,14 @@ std::optional<io::PointFile> PointRun::read() {
 
 Triangulated PointRun::triangulate(const AnyKernel& kernel, std::span<const Point2> points,
                                    const delaunay::Options& options, bool counters) {
-    progress.phase("triangulating " + std::to_string(points.size()) + " points");
-    note_memory_need("triangulating", points.size(),
-                     static_cast<double>(points.size()) * triangulate_bytes_per_point);
+    start_triangulating(points.size(), "");
     return recorded(triangulate_points(kernel, points, options, counters));
+}
+
+void PointRun::start_triangulating(std::size_t points, std::string_view what) {
+    progress.phase("triangulating " + std::to_string(points) + " points" + std::string(what));
+    note_memory_need("triangulating", points,
+                     static_cast<double>(points) * triangulate_bytes_per_point);
 }
 
 Triangulated PointRun::recorded(Triangulated t) {

@@ -260,9 +260,7 @@ public:
     template <class Make>
     Triangulated triangulate_with(const AnyKernel& kernel, std::size_t points,
                                   std::string_view what, Make make) {
-        progress.phase("triangulating " + std::to_string(points) + " points" + std::string(what));
-        note_memory_need("triangulating", points,
-                         static_cast<double>(points) * triangulate_bytes_per_point);
+        start_triangulating(points, what);
         return recorded(timed_triangulation(kernel, make));
     }
     /// The output step (times.write): `write` on standard output when `output` holds no
@@ -287,6 +285,9 @@ public:
 private:
     /// The step's time into `times`; a failure said on standard error.
     Triangulated recorded(Triangulated t);
+    /// The progress line and the memory need of triangulating `points` points; `what`
+    /// follows "points" on the progress line.
+    void start_triangulating(std::size_t points, std::string_view what);
 
     const PointCommand& command_;
     Clock::time_point start_;
